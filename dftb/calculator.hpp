@@ -1,0 +1,59 @@
+#pragma once
+// dftb::Calculator: the list of energy terms a cell asks for (band structure and repulsive
+// always; Lennard-Jones dispersion only when named), evaluated on an objective cell.
+// A term that is not asked for has no object and costs nothing.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dftb/band_structure.hpp"
+#include "dftb/energy_term.hpp"
+#include "dftb/parameters.hpp"
+
+namespace mesochain::dftb {
+
+struct DispersionSettings {
+  bool enabled = false;
+  double epsilon = 0.0;  // Hartree
+  double r0 = 0.0;       // Bohr, position of the pair minimum
+  double cutoff = 0.0;   // Bohr
+};
+
+struct CalculatorSettings {
+  BandSettings band;
+  DispersionSettings dispersion;
+};
+
+struct Result {
+  // Energies per cell, Hartree.
+  double bandEnergy = 0.0;       // sum f e
+  double entropyTerm = 0.0;      // T S
+  double repulsive = 0.0;
+  double dispersion = 0.0;
+  double totalEnergy = 0.0;      // band + repulsive + dispersion
+  double freeEnergy = 0.0;       // total - TS (Mermin); forces are its negative gradient
+  double extrapolatedEnergy = 0.0;  // total - TS/2, the T -> 0 estimate
+  Eigen::Matrix3Xd gradient;     // dF/dx, Hartree/Bohr (empty unless requested)
+  double dFdTranslation = 0.0;   // Hartree/Bohr
+  double dFdTwist = 0.0;         // Hartree/rad
+  std::map<std::string, double> extras;  // fermi_level, homo, lumo, timings, ...
+  int atoms = 0;
+};
+
+class Calculator {
+ public:
+  Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings);
+  Result evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request) const;
+  const CalculatorSettings& settings() const { return settings_; }
+  const ParameterSet& parameters() const { return *params_; }
+  std::vector<std::string> termNames() const;
+
+ private:
+  std::shared_ptr<const ParameterSet> params_;
+  CalculatorSettings settings_;
+  std::vector<std::unique_ptr<EnergyTerm>> terms_;
+  std::shared_ptr<const RadialPotential> lj_;
+};
+
+}  // namespace mesochain::dftb

@@ -1,0 +1,37 @@
+#pragma once
+// One interaction interface for every energy term of an objective cell (band structure,
+// repulsive, dispersion, later SCC Coulomb): the energy per cell, its gradient with respect to
+// the cell atoms, and its derivatives with respect to the screw translation T and twist gamma.
+// Parameters are immutable; per-geometry work happens inside evaluate().
+#include <map>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "objective/core/cell.hpp"
+
+namespace mesochain::dftb {
+
+struct EvaluationRequest {
+  bool gradient = false;  // dE/dx of the cell atoms
+  bool strain = false;    // dE/dT and dE/dgamma
+};
+
+struct TermOutput {
+  double energy = 0.0;         // Hartree per cell
+  Eigen::Matrix3Xd gradient;   // Hartree/Bohr, 3 x N_o (empty when not requested)
+  double dEdTranslation = 0.0; // Hartree/Bohr
+  double dEdTwist = 0.0;       // Hartree/rad
+  // Named extra scalars a term reports (e.g. "fermi_level"), in atomic units.
+  std::map<std::string, double> extras;
+};
+
+class EnergyTerm {
+ public:
+  virtual ~EnergyTerm() = default;
+  virtual std::string name() const = 0;
+  virtual void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
+                        TermOutput& out) const = 0;
+};
+
+}  // namespace mesochain::dftb

@@ -1,0 +1,96 @@
+#include "dftb/fermi.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace mesochain::dftb {
+
+namespace {
+double softplus(double x) { return std::max(x, 0.0) + std::log1p(std::exp(-std::abs(x))); }
+
+double electronCount(const std::vector<Eigen::VectorXd>& levels,
+                     const std::vector<double>& weights, double mu, double kT) {
+  double n = 0.0;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    double nk = 0.0;
+    for (Eigen::Index i = 0; i < levels[k].size(); ++i)
+      nk += fermiOccupation((levels[k][i] - mu) / kT);
+    n += weights[k] * nk;
+  }
+  return n;
+}
+}  // namespace
+
+double fermiOccupation(double x) {
+  if (x > 0) {
+    const double e = std::exp(-x);
+    return 2.0 * e / (1.0 + e);
+  }
+  return 2.0 / (1.0 + std::exp(x));
+}
+
+double fermiEntropy(double x) {
+  // Per spin orbital: -[f ln f + (1-f) ln(1-f)] = ln(1 + e^x) - (1 - f) x, f = 1/(1+e^x).
+  const double f = 0.5 * fermiOccupation(x);
+  return softplus(x) - (1.0 - f) * x;
+}
+
+Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
+                       const std::vector<double>& weights, double electrons, double kT) {
+  if (!(kT > 0.0) || !std::isfinite(kT))
+    throw NumericalError("Fermi filling needs a positive electronic temperature");
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  size_t capacity = 0;
+  for (const auto& e : levels) {
+    if (e.size() == 0) continue;
+    lo = std::min(lo, e.minCoeff());
+    hi = std::max(hi, e.maxCoeff());
+    capacity = std::max<size_t>(capacity, static_cast<size_t>(e.size()));
+  }
+  if (electrons < 0.0 || electrons > 2.0 * static_cast<double>(capacity) + 1e-9)
+    throw NumericalError("cannot place " + std::to_string(electrons) + " electrons in " +
+                         std::to_string(capacity) + " levels per k-point");
+  // Tolerance on the electron count: a few ulps of the total.
+  const double tol = 1e-13 * std::max(1.0, electrons);
+  const double margin = 60.0 * kT + 1.0;
+  // Lower end: the smallest mu with N(mu) >= N_el - tol; upper: the largest with N <= N_el + tol.
+  auto bisect = [&](double target, bool lower) {
+    double a = lo - margin, b = hi + margin;  // N(a) ~ 0, N(b) ~ 2 n
+    for (int it = 0; it < 300 && b - a > 1e-15 * std::max(1.0, std::abs(a) + std::abs(b)); ++it) {
+      const double m = 0.5 * (a + b);
+      const double n = electronCount(levels, weights, m, kT);
+      if (lower ? (n >= target) : (n > target)) b = m; else a = m;
+    }
+    return 0.5 * (a + b);
+  };
+  const double muLow = bisect(electrons - tol, true);
+  const double muHigh = bisect(electrons + tol, false);
+  Filling out;
+  out.fermiLevel = 0.5 * (muLow + std::max(muLow, muHigh));
+  out.highestOccupied = -std::numeric_limits<double>::infinity();
+  out.lowestUnoccupied = std::numeric_limits<double>::infinity();
+  out.occupations.resize(levels.size());
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const Eigen::VectorXd& e = levels[k];
+    Eigen::VectorXd& f = out.occupations[k];
+    f.resize(e.size());
+    double ts = 0.0, eb = 0.0;
+    for (Eigen::Index i = 0; i < e.size(); ++i) {
+      const double x = (e[i] - out.fermiLevel) / kT;
+      f[i] = fermiOccupation(x);
+      eb += f[i] * e[i];
+      ts += 2.0 * fermiEntropy(x);
+      if (e[i] <= out.fermiLevel) out.highestOccupied = std::max(out.highestOccupied, e[i]);
+      else out.lowestUnoccupied = std::min(out.lowestUnoccupied, e[i]);
+    }
+    out.bandEnergy += weights[k] * eb;
+    out.entropyTerm += weights[k] * kT * ts;
+  }
+  return out;
+}
+
+}  // namespace mesochain::dftb
