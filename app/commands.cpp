@@ -3,9 +3,11 @@
 namespace mesochain::app {
 
 Command makeVersionCommand();
+Command makeRunCommand();
+Command makeBenchCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

@@ -1,0 +1,137 @@
+#include "app/run_report.hpp"
+
+#include <cmath>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "common/units.hpp"
+
+namespace mesochain::app {
+
+using nlohmann::json;
+using units::kBohrInAngstrom;
+
+namespace {
+// A per-cell value beside its per-atom value.
+json perCellAndAtom(double value, int atoms) {
+  return json{{"per_cell", value}, {"per_atom", value / atoms}};
+}
+
+json matrixRows(const Eigen::Matrix3Xd& m) {
+  json rows = json::array();
+  for (Eigen::Index a = 0; a < m.cols(); ++a) rows.push_back({m(0, a), m(1, a), m(2, a)});
+  return rows;
+}
+
+double extra(const dftb::Result& r, const char* key) {
+  auto it = r.extras.find(key);
+  return it == r.extras.end() ? 0.0 : it->second;
+}
+}  // namespace
+
+json resultJson(const objective::CellInput& input, const objective::ObjectiveCell& cell,
+                const dftb::Result& r, const objective::RelaxOutcome* relax) {
+  const int n = cell.atomCount();
+  const auto& sym = cell.symmetry;
+  json j;
+  j["format"] = 1;
+  j["program"] = "mesochain 0.1.0";
+  j["input"] = input.source;
+  j["task"] = input.task.type;
+  json species = json::array();
+  for (int a = 0; a < n; ++a) species.push_back(cell.speciesOf(a));
+  j["cell"] = {{"atoms", n},
+               {"species", species},
+               {"positions_angstrom", matrixRows(cell.positions * kBohrInAngstrom)},
+               {"translation_angstrom", sym.translation() * kBohrInAngstrom},
+               {"twist_degrees", sym.isRing() ? 360.0 / sym.rotationOrder()
+                                              : sym.twist() / units::kDegree},
+               {"rotation_order", sym.rotationOrder()},
+               {"closed_ring", sym.isRing()}};
+  j["kpoints"] = {{"helical", sym.isRing() ? 0 : input.helicalKPoints},
+                  {"angular", input.angular.samples == 0 ? json("all") : json(input.angular.samples)},
+                  {"reduced_points", static_cast<int>(extra(r, "kpoints"))}};
+  j["electronic_temperature_kelvin"] =
+      input.electronicTemperature / units::kBoltzmannHartreePerKelvin;
+  j["energies_hartree"] = {
+      {"band", perCellAndAtom(r.bandEnergy, n)},
+      {"entropy_term_ts", perCellAndAtom(r.entropyTerm, n)},
+      {"repulsive", perCellAndAtom(r.repulsive, n)},
+      {"dispersion", perCellAndAtom(r.dispersion, n)},
+      {"total", perCellAndAtom(r.totalEnergy, n)},
+      {"mermin_free", perCellAndAtom(r.freeEnergy, n)},
+      {"extrapolated_zero_temperature", perCellAndAtom(r.extrapolatedEnergy, n)}};
+  if (r.extras.count("dispersion_tail_estimate"))
+    j["energies_hartree"]["dispersion_tail_estimate"] =
+        perCellAndAtom(r.extras.at("dispersion_tail_estimate"), n);
+  j["electrons_per_cell"] = extra(r, "electrons");
+  j["fermi_level_hartree"] = extra(r, "fermi_level");
+  const double homo = extra(r, "homo"), lumo = extra(r, "lumo");
+  j["homo_hartree"] = std::isfinite(homo) ? json(homo) : json(nullptr);
+  j["lumo_hartree"] = std::isfinite(lumo) ? json(lumo) : json(nullptr);
+  j["gap_hartree"] = std::isfinite(homo) && std::isfinite(lumo) ? json(lumo - homo) : json(nullptr);
+  if (r.gradient.size()) {
+    j["forces_hartree_per_bohr"] = matrixRows(-r.gradient);
+    j["max_force_hartree_per_bohr"] = objective::maxForce(r.gradient);
+  }
+  if (!sym.isRing()) {
+    j["axial_force_hartree_per_bohr"] = -r.dFdTranslation;
+    j["torque_hartree_per_radian"] = -r.dFdTwist;
+  }
+  if (relax) {
+    json hist = json::array();
+    for (const auto& h : relax->history)
+      hist.push_back({{"translation_angstrom", h.translation * kBohrInAngstrom},
+                      {"mermin_free_hartree", h.freeEnergy},
+                      {"max_force_hartree_per_bohr", h.maxForce},
+                      {"axial_force_hartree_per_bohr", h.axialForce}});
+    j["relaxation"] = {{"converged", relax->converged},
+                       {"evaluations", relax->evaluations},
+                       {"force_tolerance_hartree_per_bohr", input.task.forceTolerance},
+                       {"relax_translation", input.task.relaxTranslation},
+                       {"history", hist}};
+  }
+  json t;
+  for (const auto& [k, v] : r.extras)
+    if (k.rfind("time_", 0) == 0) t[k.substr(5)] = v;
+  j["timings_seconds"] = t;
+  return j;
+}
+
+void printSummary(std::ostream& out, const objective::CellInput& input,
+                  const objective::ObjectiveCell& cell, const dftb::Result& r,
+                  const objective::RelaxOutcome* relax) {
+  const int n = cell.atomCount();
+  const auto& sym = cell.symmetry;
+  out << fmt::format("cell: {} atoms, ", n);
+  if (sym.isRing())
+    out << fmt::format("closed ring of N_a = {}\n", sym.rotationOrder());
+  else
+    out << fmt::format("screw T = {:.6f} Å, twist = {:.6f}°, rotation order {}\n",
+                       sym.translation() * kBohrInAngstrom, sym.twist() / units::kDegree,
+                       sym.rotationOrder());
+  out << fmt::format("k-points: {} reduced, kT = {:.1f} K\n", static_cast<int>(extra(r, "kpoints")),
+                     input.electronicTemperature / units::kBoltzmannHartreePerKelvin);
+  if (relax)
+    out << fmt::format("relaxation: {} after {} evaluations\n",
+                       relax->converged ? "converged" : "NOT converged", relax->evaluations);
+  out << fmt::format("{:<34}{:>20}{:>20}\n", "energy (Hartree)", "per cell", "per atom");
+  auto row = [&](const char* name, double v) {
+    out << fmt::format("{:<34}{:>20.10f}{:>20.10f}\n", name, v, v / n);
+  };
+  row("band", r.bandEnergy);
+  row("repulsive", r.repulsive);
+  if (input.dispersion.model != "none") row("dispersion", r.dispersion);
+  row("-TS", -r.entropyTerm);
+  row("total", r.totalEnergy);
+  row("Mermin free energy", r.freeEnergy);
+  row("extrapolated to T = 0", r.extrapolatedEnergy);
+  out << fmt::format("Fermi level: {:.8f} Ha\n", extra(r, "fermi_level"));
+  if (r.gradient.size())
+    out << fmt::format("largest force: {:.3e} Ha/Bohr\n", objective::maxForce(r.gradient));
+  if (!sym.isRing() && r.gradient.size())
+    out << fmt::format("axial force -dF/dT: {:.3e} Ha/Bohr\n", -r.dFdTranslation);
+}
+
+}  // namespace mesochain::app
