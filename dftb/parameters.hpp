@@ -5,6 +5,7 @@
 // All quantities in atomic units (Hartree, Bohr).
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct SpeciesData {
   double onsiteS = 0.0;        // Hartree (free-atom eigenvalues from the homonuclear table)
   double onsiteP = 0.0;
   double hubbardU = 0.0;       // Hartree (s-shell value, as used by SCC)
-  double valenceElectrons = 0.0;  // sum of the shell occupations of the table
+  double valenceElectrons = 0.0;  // sum of the occupations of the shells in use (s .. l_max)
   double mass = 0.0;              // atomic mass units, as in the table
 };
 
@@ -57,10 +58,16 @@ class ParameterSet {
   // maxAngularMomentum: optional per-species override ("s" or "p"); by default the highest
   // shell with a non-zero occupation in A-A.skf. A d shell gives InputError
   // "d shells not supported yet".
+  // polynomialRepulsive: pairs "A-B" whose repulsive is the polynomial of the mass line instead
+  // of the Spline block (DFTB+ keyword PolynomialRepulsive; by default every pair uses the
+  // spline and a table without a Spline block is an error, as in DFTB+).
+  // Implementation: dftb/parameters.cpp; tables: dftb/skf_file.hpp; interpolation:
+  // dftb/sk_grid.hpp; rotation and heteronuclear convention: dftb/sk_pair.hpp.
   static ParameterSet load(const std::vector<std::string>& species,
                            const std::map<std::string, std::string>& files,
                            const std::string& source,
-                           const std::map<std::string, int>& maxAngularMomentum = {});
+                           const std::map<std::string, int>& maxAngularMomentum = {},
+                           const std::set<std::string>& polynomialRepulsive = {});
 
   int speciesCount() const { return static_cast<int>(species_.size()); }
   const SpeciesData& species(int a) const { return species_[a]; }
