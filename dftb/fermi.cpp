@@ -54,21 +54,23 @@ Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
   if (electrons < 0.0 || electrons > 2.0 * static_cast<double>(capacity) + 1e-9)
     throw NumericalError("cannot place " + std::to_string(electrons) + " electrons in " +
                          std::to_string(capacity) + " levels per k-point");
-  // Tolerance on the electron count: a few ulps of the total.
-  const double tol = 1e-13 * std::max(1.0, electrons);
   const double margin = 60.0 * kT + 1.0;
-  // Lower end: the smallest mu with N(mu) >= N_el - tol; upper: the largest with N <= N_el + tol.
-  auto bisect = [&](double target, bool lower) {
+  // Lower end: the smallest mu with N(mu) >= N_el; upper end: the largest with N(mu) <= N_el.
+  // Where N is strictly increasing both are the root; where it is flat to double precision (a
+  // gap at low temperature) the Fermi level is the middle of the flat interval. Bisection runs
+  // to full double precision (until the midpoint equals an end).
+  auto bisect = [&](bool lower) {
     double a = lo - margin, b = hi + margin;  // N(a) ~ 0, N(b) ~ 2 n
-    for (int it = 0; it < 300 && b - a > 1e-15 * std::max(1.0, std::abs(a) + std::abs(b)); ++it) {
+    for (int it = 0; it < 2200; ++it) {
       const double m = 0.5 * (a + b);
+      if (m <= a || m >= b) break;
       const double n = electronCount(levels, weights, m, kT);
-      if (lower ? (n >= target) : (n > target)) b = m; else a = m;
+      if (lower ? (n >= electrons) : (n > electrons)) b = m; else a = m;
     }
     return 0.5 * (a + b);
   };
-  const double muLow = bisect(electrons - tol, true);
-  const double muHigh = bisect(electrons + tol, false);
+  const double muLow = bisect(true);
+  const double muHigh = bisect(false);
   Filling out;
   out.fermiLevel = 0.5 * (muLow + std::max(muLow, muHigh));
   out.highestOccupied = -std::numeric_limits<double>::infinity();
