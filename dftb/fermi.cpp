@@ -73,6 +73,21 @@ Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
   const double muHigh = bisect(false);
   Filling out;
   out.fermiLevel = 0.5 * (muLow + std::max(muLow, muHigh));
+  if (muHigh > muLow) {
+    // N(mu) = N_el over a whole interval: a gap. Put the Fermi level in the middle between the
+    // highest level below and the lowest level above it (DFTB+ does the same).
+    double below = -std::numeric_limits<double>::infinity();
+    double above = std::numeric_limits<double>::infinity();
+    for (const auto& e : levels)
+      for (Eigen::Index i = 0; i < e.size(); ++i) {
+        if (e[i] <= out.fermiLevel) below = std::max(below, e[i]);
+        else above = std::min(above, e[i]);
+      }
+    if (std::isfinite(below) && std::isfinite(above)) {
+      const double mid = 0.5 * (below + above);
+      if (electronCount(levels, weights, mid, kT) == electrons) out.fermiLevel = mid;
+    }
+  }
   out.highestOccupied = -std::numeric_limits<double>::infinity();
   out.lowestUnoccupied = std::numeric_limits<double>::infinity();
   out.occupations.resize(levels.size());

@@ -22,9 +22,8 @@ TEST(Fermi, InsulatorFermiLevelMidGap) {
   std::vector<double> w{0.5, 0.5};
   const double kT = 1e-4;
   const Filling f = fillFermiDirac(levels, w, 4.0, kT);
-  // N(mu) = N_el holds to double precision over most of the gap; the Fermi level is the middle
-  // of that flat interval, which lies within kT of mid-gap (the ends are set by rounding).
-  EXPECT_NEAR(f.fermiLevel, 0.5 * (-0.4 + 0.2), kT);
+  // N(mu) = N_el holds to double precision over most of the gap: the Fermi level is mid-gap.
+  EXPECT_NEAR(f.fermiLevel, 0.5 * (-0.4 + 0.2), 1e-15);
   EXPECT_NEAR(count(f, w), 4.0, 1e-12);
   EXPECT_NEAR(f.highestOccupied, -0.4, 0);
   EXPECT_NEAR(f.lowestUnoccupied, 0.2, 0);
