@@ -3,9 +3,11 @@
 namespace mesochain::app {
 
 Command makeVersionCommand();
+Command makeDemCommand();
+Command makeBenchCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand()};
+  return {makeVersionCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

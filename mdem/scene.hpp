@@ -25,6 +25,7 @@ struct BondType {
 
 struct RunControl {
   double timeStep = 0.0;              // ns
+  double timeStepFraction = 0.0;      // > 0: time step = this fraction of the critical one
   long steps = 0;                     // maximum number of steps
   double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)
   long checkEvery = 100;              // steps between stop checks

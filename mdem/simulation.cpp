@@ -1,6 +1,7 @@
 #include "mdem/simulation.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -39,6 +40,15 @@ Simulation::Simulation(const Scene& scene)
 
   limit_ = criticalTimeStep(state_.bodies, bondEffect_ ? bondEffect_->bonds() : std::vector<Bond>{},
                             kinematics_);
+  if (scene.run.timeStepFraction > 0.0) {
+    if (scene.run.timeStepFraction > 1.0)
+      throw InputError(scene.source, "key run.time_step_fraction",
+                       fmt::format("{}", scene.run.timeStepFraction), "a fraction in (0, 1]");
+    h_ = scene.run.timeStepFraction * limit_.criticalTimeStep;
+    if (!std::isfinite(h_))
+      throw InputError(scene.source, "key run.time_step_fraction", "a scene without bonds",
+                       "run.time_step_ns instead (no critical step to take a fraction of)");
+  }
   if (!(h_ > 0.0))
     throw InputError(scene.source, "key run.time_step_ns", fmt::format("{}", h_),
                      "a positive time step");
