@@ -57,7 +57,7 @@ Simulation::Simulation(const Scene& scene)
                      fmt::format("at most the critical time step {:.6g} ns (2/omega_max, "
                                  "omega_max = {:.6g} rad/ns bounded from the bond stiffness "
                                  "and the {} of element {})",
-                                 limit_.criticalTimeStep, h_ > 0 ? limit_.omegaMax : 0.0,
+                                 limit_.criticalTimeStep, limit_.omegaMax,
                                  limit_.rotational ? "moments of inertia" : "mass",
                                  limit_.element));
   kinematics_.apply(state_.bodies, 0.0);
