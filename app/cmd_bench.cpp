@@ -1,135 +1,37 @@
-// `mesochain bench dftb`: time per energy+forces evaluation and the share of it spent in the
-// LAPACK eigensolver, for (i) a (10,10) tube as a 2-atom helical cell with 800 kappa points and
-// (ii) the 120-atom translational cell of a (30,30) tube with 20 kappa points.
-// `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob).
-#include <chrono>
-#include <fstream>
-#include <iostream>
+// `mesochain bench WHAT`: benchmarks that print ratios and shares (never timed tests).
+// Each benchmark is a Command attached under `bench` (bench_*.cpp).
 #include <memory>
-#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <fmt/format.h>
-#include <omp.h>
 
 #include "app/commands.hpp"
-#include "common/units.hpp"
-#include "dftb/calculator.hpp"
-#include "objective/core/nanotube_builder.hpp"
 
 namespace mesochain::app {
 
-namespace {
-using Clock = std::chrono::steady_clock;
-
-std::shared_ptr<const dftb::ParameterSet> carbon(const std::string& table) {
-  return std::make_shared<const dftb::ParameterSet>(
-      dftb::ParameterSet::load({"C"}, {{"C-C", table}}, "<bench>"));
-}
-
-dftb::Calculator calculator(const std::string& table, int nKappa, double kelvin) {
-  dftb::CalculatorSettings s;
-  s.band.helicalKPoints = nKappa;
-  s.band.electronicTemperature = kelvin * units::kBoltzmannHartreePerKelvin;
-  return dftb::Calculator(carbon(table), s);
-}
-
-struct Timing {
-  double perEvaluation = 0, eigensolver = 0, assembly = 0, density = 0, forces = 0, other = 0;
-};
-
-Timing timeEvaluations(const dftb::Calculator& calc, const objective::ObjectiveCell& cell,
-                       int repeats) {
-  calc.evaluate(cell, {true, true});  // warm-up
-  Timing t;
-  for (int r = 0; r < repeats; ++r) {
-    const auto a = Clock::now();
-    const dftb::Result res = calc.evaluate(cell, {true, true});
-    t.perEvaluation += std::chrono::duration<double>(Clock::now() - a).count();
-    t.eigensolver += res.extras.at("time_eigensolver");
-    t.assembly += res.extras.at("time_assembly");
-    t.density += res.extras.at("time_density");
-    t.forces += res.extras.at("time_forces");
-  }
-  for (double* x : {&t.perEvaluation, &t.eigensolver, &t.assembly, &t.density, &t.forces})
-    *x /= repeats;
-  t.other = t.perEvaluation - t.eigensolver - t.assembly - t.density - t.forces;
-  return t;
-}
-
-void report(const std::string& name, const Timing& t) {
-  std::cout << fmt::format(
-      "{:<44} {:9.4f} s/eval | eigensolver {:5.1f}% | assembly {:5.1f}% | density {:5.1f}% | "
-      "forces {:5.1f}% | other {:5.1f}%\n",
-      name, t.perEvaluation, 100 * t.eigensolver / t.perEvaluation,
-      100 * t.assembly / t.perEvaluation, 100 * t.density / t.perEvaluation,
-      100 * t.forces / t.perEvaluation, 100 * t.other / t.perEvaluation);
-}
-
-int benchDftb(const std::string& table, int repeats) {
-  std::cout << fmt::format("mesochain bench dftb: {} OpenMP threads, {} repeats, table {}\n",
-                           omp_get_max_threads(), repeats, table);
-  const double bond = 1.42 * units::kAngstromInBohr;
-  {
-    const auto cell = objective::buildNanotubeHelical(10, 10, bond);
-    report("(10,10) helical 2 atoms, 800 kappa, 300 K", timeEvaluations(calculator(table, 800, 300), cell, repeats));
-  }
-  {
-    const auto cell = objective::buildNanotubeTranslational(30, 30, bond, false);
-    report(fmt::format("(30,30) translational {} atoms, 20 kappa, 300 K", cell.atomCount()),
-           timeEvaluations(calculator(table, 20, 300), cell, repeats));
-  }
-  return 0;
-}
-
-int benchKpoints(const std::string& table, const std::string& csv) {
-  // Error of the free energy per atom against the number of kappa points, and its cost, for a
-  // metallic (10,10) and a semiconducting (10,0) tube; the reference is a 4x denser grid.
-  const double bond = 1.42 * units::kAngstromInBohr;
-  std::ofstream out;
-  if (!csv.empty()) {
-    out.open(csv);
-    out << "tube,kelvin,kappa_points,seconds,free_energy_per_atom_hartree,abs_error_hartree\n";
-  }
-  std::cout << fmt::format("{:<8} {:>7} {:>8} {:>12} {:>22} {:>12}\n", "tube", "T (K)", "kappa",
-                           "seconds", "F per atom (Ha)", "|error| (Ha)");
-  for (auto [n, m] : {std::pair{10, 10}, std::pair{10, 0}})
-    for (double kelvin : {300.0, 30.0}) {
-      const auto cell = objective::buildNanotubeHelical(n, m, bond);
-      const double ref = calculator(table, 4096, kelvin).evaluate(cell, {}).freeEnergy / 2;
-      for (int nk : {8, 16, 32, 64, 128, 256, 512, 1024}) {
-        const auto a = Clock::now();
-        const double f = calculator(table, nk, kelvin).evaluate(cell, {}).freeEnergy / 2;
-        const double s = std::chrono::duration<double>(Clock::now() - a).count();
-        const std::string tube = fmt::format("({},{})", n, m);
-        std::cout << fmt::format("{:<8} {:>7.0f} {:>8} {:>12.5f} {:>22.12f} {:>12.3e}\n", tube,
-                                 kelvin, nk, s, f, std::abs(f - ref));
-        if (out) out << fmt::format("{},{},{},{},{:.15g},{:.6e}\n", tube, kelvin, nk, s, f, std::abs(f - ref));
-      }
-    }
-  return 0;
-}
-}  // namespace
+Command makeBenchDftbCommand();
+Command makeBenchKpointsCommand();
+Command makeBenchDemCommand();
 
 Command makeBenchCommand() {
-  struct Opts {
-    std::string what, table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv;
-    int repeats = 3;
-  };
-  auto o = std::make_shared<Opts>();
-  auto sub = std::make_shared<CLI::App*>(nullptr);
+  auto subs = std::make_shared<std::vector<Command>>(
+      std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand()});
   Command c;
-  c.attach = [o, sub](CLI::App& app) {
-    auto* s = app.add_subcommand("bench", "benchmarks: dftb (cost shares), kpoints (error vs time)");
-    s->add_option("what", o->what, "dftb | kpoints")->required()->check(CLI::IsMember({"dftb", "kpoints"}));
-    s->add_option("--table", o->table, "C-C Slater-Koster table");
-    s->add_option("--repeats", o->repeats, "evaluations to average");
-    s->add_option("--csv", o->csv, "write the curve as CSV (kpoints)");
-    *sub = s;
+  c.attach = [subs](CLI::App& app) {
+    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem");
+    bench->require_subcommand(1);
+    for (auto& s : *subs) s.attach(*bench);
   };
-  c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [o] { return o->what == "dftb" ? benchDftb(o->table, o->repeats) : benchKpoints(o->table, o->csv); };
+  c.selected = [subs] {
+    for (auto& s : *subs)
+      if (s.selected()) return true;
+    return false;
+  };
+  c.run = [subs] {
+    for (auto& s : *subs)
+      if (s.selected()) return s.run();
+    return 0;
+  };
   return c;
 }
 

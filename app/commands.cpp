@@ -4,10 +4,11 @@ namespace mesochain::app {
 
 Command makeVersionCommand();
 Command makeRunCommand();
+Command makeDemCommand();
 Command makeBenchCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

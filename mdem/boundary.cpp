@@ -1,0 +1,116 @@
+#include "mdem/boundary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mdem/units.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+double rampFactor(double t, double ramp) { return ramp > 0.0 ? std::min(1.0, t / ramp) : 1.0; }
+// (1 - cos(2 pi t / T)) / T on [0, T], 0 after: integrates to 1 over [0, T].
+double smoothProfile(double t, double duration) {
+  if (t < 0.0 || t >= duration) return 0.0;
+  return (1.0 - std::cos(2.0 * units::kPi * t / duration)) / duration;
+}
+}  // namespace
+
+Vec3 Prescribed::velocityAt(double t) const {
+  if (duration > 0.0) return smoothProfile(t, duration) * translateBy;
+  return rampFactor(t, ramp) * velocity;
+}
+
+Vec3 Prescribed::angularVelocityAt(double t) const {
+  if (duration > 0.0) return smoothProfile(t, duration) * rotateBy;
+  return rampFactor(t, ramp) * angularVelocity;
+}
+
+KinematicMap::KinematicMap(const Boundary& b, int n)
+    : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0) {
+  for (const FixedDofs& f : b.fixed) {
+    fixed[f.element] = &f;
+    if (f.allRotationsFixed()) kinematicRotation[f.element] = 1;
+  }
+  for (const Prescribed& p : b.prescribed) {
+    prescribed[p.element] = &p;
+    kinematicRotation[p.element] = 1;
+  }
+}
+
+void KinematicMap::apply(Bodies& s, double t) const {
+  for (int i = 0; i < s.size(); ++i) {
+    if (const Prescribed* p = prescribed[i]) {
+      s.velocity[i] = p->velocityAt(t);
+      s.setAngularVelocityWorld(i, p->angularVelocityAt(t));
+      continue;
+    }
+    const FixedDofs* f = fixed[i];
+    if (!f) continue;
+    for (int d = 0; d < 3; ++d)
+      if (f->fixed[d]) s.velocity[i][d] = 0.0;
+    if (f->allRotationsFixed()) {
+      s.angularMomentumBody[i].setZero();
+    } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {
+      // Projection of the world angular velocity (exact for rotations about principal axes).
+      Vec3 w = s.angularVelocityWorld(i);
+      for (int d = 0; d < 3; ++d)
+        if (f->fixed[3 + d]) w[d] = 0.0;
+      s.setAngularVelocityWorld(i, w);
+    }
+  }
+}
+
+void KinematicMap::clearConstrainedForces(Bodies& s) const {
+  for (int i = 0; i < s.size(); ++i) {
+    if (prescribed[i]) {
+      s.force[i].setZero();
+      s.torque[i].setZero();
+      continue;
+    }
+    if (const FixedDofs* f = fixed[i]) {
+      for (int d = 0; d < 3; ++d) {
+        if (f->fixed[d]) s.force[i][d] = 0.0;
+        if (f->fixed[3 + d]) s.torque[i][d] = 0.0;
+      }
+    }
+  }
+}
+
+LoadEffect::LoadEffect(std::vector<Load> loads, const Bodies& initial) : loads_(std::move(loads)) {
+  for (const Load& l : loads_) {
+    forceBody_.push_back(rotateInverse(initial.orientation[l.element], l.force));
+    momentBody_.push_back(rotateInverse(initial.orientation[l.element], l.moment));
+  }
+}
+
+void LoadEffect::addForces(State& state) {
+  Bodies& s = state.bodies;
+  for (std::size_t k = 0; k < loads_.size(); ++k) {
+    const Load& l = loads_[k];
+    const double r = rampFactor(state.time, l.ramp);
+    if (l.following) {
+      s.force[l.element] += r * rotate(s.orientation[l.element], forceBody_[k]);
+      s.torque[l.element] += r * rotate(s.orientation[l.element], momentBody_[k]);
+    } else {
+      s.force[l.element] += r * l.force;
+      s.torque[l.element] += r * l.moment;
+    }
+  }
+}
+
+Energies LoadEffect::energy(const State& state) const {
+  // Potential of fixed-direction loads once fully applied: -F.u - M.phi, with phi the
+  // accumulated rotation (exact for rotation about a fixed axis). Following loads: 0.
+  Energies e;
+  const Bodies& s = state.bodies;
+  for (const Load& l : loads_) {
+    if (l.following || rampFactor(state.time, l.ramp) < 1.0) continue;
+    const int i = l.element;
+    e.loadPotential -= l.force.dot(s.position[i] - s.initialPosition[i]) +
+                       l.moment.dot(s.accumulatedRotation[i]);
+  }
+  return e;
+}
+
+}  // namespace mesochain::mdem

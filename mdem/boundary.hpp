@@ -1,0 +1,83 @@
+#pragma once
+// Boundary conditions: fixed degrees of freedom, applied loads and prescribed motions.
+// Fixed DOFs and prescribed motions are kinematic: the integrator overwrites the velocities
+// after each half kick (constraints.cpp). Loads are an effect (LoadEffect), built whenever the
+// scene has loads.
+#include <array>
+#include <vector>
+
+#include "mdem/effect.hpp"
+
+namespace mesochain::mdem {
+
+// DOF order: x, y, z (translation), rx, ry, rz (rotation about the world axes).
+struct FixedDofs {
+  int element = -1;
+  std::array<bool, 6> fixed{};
+  bool allRotationsFixed() const { return fixed[3] && fixed[4] && fixed[5]; }
+};
+
+struct Load {
+  int element = -1;
+  Vec3 force = Vec3::Zero();   // pN
+  Vec3 moment = Vec3::Zero();  // pN nm
+  // false: fixed world direction; true: follows the element (given in the world frame at t = 0,
+  // then carried with the element's orientation).
+  bool following = false;
+  double ramp = 0.0;  // ns; the load grows linearly from 0 over this time
+};
+
+// A prescribed motion takes all 6 DOFs of the element.
+//  * velocity mode: v(t) = velocity * r(t), omega(t) = angularVelocity * r(t), with
+//    r(t) = min(1, t / ramp) (r = 1 if ramp = 0);
+//  * displacement mode (duration > 0): moves by `translateBy` and turns by `rotateBy`
+//    (rotation vector, world frame, any angle) over `duration` with the smooth profile
+//    v(t) = translateBy / T (1 - cos(2 pi t / T)), zero velocity and acceleration at both
+//    ends; afterwards the element is held.
+struct Prescribed {
+  int element = -1;
+  Vec3 velocity = Vec3::Zero();         // nm/ns
+  Vec3 angularVelocity = Vec3::Zero();  // rad/ns
+  double ramp = 0.0;                    // ns
+  Vec3 translateBy = Vec3::Zero();      // nm
+  Vec3 rotateBy = Vec3::Zero();         // rad
+  double duration = 0.0;                // ns (> 0 selects the displacement mode)
+
+  Vec3 velocityAt(double t) const;
+  Vec3 angularVelocityAt(double t) const;
+};
+
+struct Boundary {
+  std::vector<FixedDofs> fixed;
+  std::vector<Load> loads;
+  std::vector<Prescribed> prescribed;
+};
+
+// Per element: 0 = free, 1 = some DOFs fixed, 2 = rotation kinematic (all rotations fixed or
+// prescribed; the orientation is then advanced by exp(h omega_world) instead of the free rotor).
+struct KinematicMap {
+  std::vector<const FixedDofs*> fixed;         // per element or nullptr
+  std::vector<const Prescribed*> prescribed;   // per element or nullptr
+  std::vector<char> kinematicRotation;         // per element
+
+  KinematicMap(const Boundary& b, int elementCount);
+  // Overwrites constrained velocities for time t (after a half kick).
+  void apply(Bodies& s, double t) const;
+  // Zeroes force / torque components on fixed and prescribed DOFs (for reporting and for the
+  // damping, which must see the unbalanced force only).
+  void clearConstrainedForces(Bodies& s) const;
+};
+
+class LoadEffect : public Effect {
+ public:
+  LoadEffect(std::vector<Load> loads, const Bodies& initial);
+  std::string name() const override { return "loads"; }
+  void addForces(State& state) override;
+  Energies energy(const State& state) const override;
+
+ private:
+  std::vector<Load> loads_;
+  std::vector<Vec3> forceBody_, momentBody_;  // following loads in the body frame
+};
+
+}  // namespace mesochain::mdem

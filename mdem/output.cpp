@@ -1,0 +1,88 @@
+#include "mdem/output.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "common/errors.hpp"
+
+namespace mesochain::mdem {
+
+EnergyCsvWriter::EnergyCsvWriter(const std::string& path, std::vector<int> probes)
+    : out_(path), probes_(std::move(probes)) {
+  if (!out_) throw InputError(path, "", "a file that cannot be written", "a writable path");
+  out_ << "step,time_ns,kinetic_translational_zJ,kinetic_rotational_zJ,stretching_zJ,"
+          "shearing_zJ,twisting_zJ,bending_zJ,load_potential_zJ,total_zJ";
+  for (int p : probes_)
+    for (const char* c : {"ux_nm", "uy_nm", "uz_nm", "rx_rad", "ry_rad", "rz_rad"})
+      out_ << ",p" << p << "_" << c;
+  out_ << "\n";
+}
+
+void EnergyCsvWriter::write(long step, double time, const Energies& e, const Bodies& b) {
+  out_ << fmt::format("{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}",
+                      step, time, e.kineticTranslational, e.kineticRotational, e.bonds.stretching,
+                      e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.loadPotential,
+                      e.total());
+  for (int p : probes_) {
+    const Vec3 u = b.position[p] - b.initialPosition[p];
+    const Vec3& r = b.accumulatedRotation[p];
+    out_ << fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}", u.x(), u.y(), u.z(),
+                        r.x(), r.y(), r.z());
+  }
+  out_ << "\n";
+}
+
+void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<ElementType>& types,
+                   double time, long step) {
+  out << b.size() << "\n";
+  out << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:velo:R:3"
+      << fmt::format(" Time={:.10g} Step={} pbc=\"F F F\"\n", time, step);
+  for (int i = 0; i < b.size(); ++i) {
+    const ElementType& t = types[b.type[i]];
+    const Vec3& x = b.position[i];
+    const Quat& q = b.orientation[i];
+    const Vec3 e = t.halfExtents();
+    const Vec3& v = b.velocity[i];
+    out << fmt::format("{} {:.10g} {:.10g} {:.10g} {:.12g} {:.12g} {:.12g} {:.12g} {:.6g} {:.6g} "
+                       "{:.6g} {:.8g} {:.8g} {:.8g}\n",
+                       t.name, x.x(), x.y(), x.z(), q.x, q.y, q.z, q.w, e.x(), e.y(), e.z(),
+                       v.x(), v.y(), v.z());
+  }
+}
+
+void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<Bond>& bonds,
+                   double time) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path, "", "a file that cannot be written", "a writable path");
+  const int n = b.size();
+  out << "# vtk DataFile Version 3.0\n";
+  out << fmt::format("mesochain mdem frame, time {:.10g} ns, lengths in nm\n", time);
+  out << "ASCII\nDATASET POLYDATA\n";
+  out << "POINTS " << n << " double\n";
+  for (const Vec3& x : b.position) out << fmt::format("{:.10g} {:.10g} {:.10g}\n", x.x(), x.y(), x.z());
+  out << "VERTICES " << n << " " << 2 * n << "\n";
+  for (int i = 0; i < n; ++i) out << "1 " << i << "\n";
+  if (!bonds.empty()) {
+    out << "LINES " << bonds.size() << " " << 3 * bonds.size() << "\n";
+    for (const Bond& bd : bonds) out << "2 " << bd.a << " " << bd.b << "\n";
+  }
+  out << "POINT_DATA " << n << "\n";
+  out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
+  for (int i = 0; i < n; ++i) out << i << "\n";
+  out << "SCALARS type int 1\nLOOKUP_TABLE default\n";
+  for (int i = 0; i < n; ++i) out << b.type[i] << "\n";
+  out << "SCALARS quaternion double 4\nLOOKUP_TABLE default\n";
+  for (const Quat& q : b.orientation) out << fmt::format("{:.12g} {:.12g} {:.12g} {:.12g}\n", q.w, q.x, q.y, q.z);
+  const char* names[3] = {"axis_x", "axis_y", "axis_z"};
+  for (int a = 0; a < 3; ++a) {
+    out << "VECTORS " << names[a] << " double\n";
+    for (const Quat& q : b.orientation) {
+      const Vec3 e = rotate(q, Vec3::Unit(a));
+      out << fmt::format("{:.10g} {:.10g} {:.10g}\n", e.x(), e.y(), e.z());
+    }
+  }
+  out << "VECTORS velocity double\n";
+  for (const Vec3& v : b.velocity) out << fmt::format("{:.10g} {:.10g} {:.10g}\n", v.x(), v.y(), v.z());
+}
+
+}  // namespace mesochain::mdem

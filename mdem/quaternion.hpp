@@ -1,0 +1,101 @@
+#pragma once
+// Unit quaternions for rigid-body orientations: q = (w, x, y, z) with w the scalar part.
+// Convention: q rotates body-frame vectors into the world frame (active rotation),
+// v_world = q v_body q*. Composition q_a ⊗ q_b applies q_b first.
+// The rotation-vector maps (exp/log) and the SO(3) left Jacobian used by the bond follow the
+// standard Lie-group formulas (e.g. Sola, Deray & Atchuthan, "A micro Lie theory", 2018).
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace mesochain::mdem {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+struct Quat {
+  double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
+
+  Vec3 vec() const { return {x, y, z}; }
+  double norm() const { return std::sqrt(w * w + x * x + y * y + z * z); }
+};
+
+inline Quat conj(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+
+inline Quat operator*(const Quat& a, const Quat& b) {
+  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
+          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+
+inline Quat normalized(const Quat& q) {
+  const double n = q.norm();
+  return {q.w / n, q.x / n, q.y / n, q.z / n};
+}
+
+// v_world = R(q) v.  Uses v' = v + 2 w (u x v) + 2 u x (u x v), u = vector part.
+inline Vec3 rotate(const Quat& q, const Vec3& v) {
+  const Vec3 u = q.vec();
+  const Vec3 t = 2.0 * u.cross(v);
+  return v + q.w * t + u.cross(t);
+}
+
+// R(q)^T v.
+inline Vec3 rotateInverse(const Quat& q, const Vec3& v) { return rotate(conj(q), v); }
+
+inline Mat3 toMatrix(const Quat& q) {
+  Mat3 r;
+  r.col(0) = rotate(q, Vec3::UnitX());
+  r.col(1) = rotate(q, Vec3::UnitY());
+  r.col(2) = rotate(q, Vec3::UnitZ());
+  return r;
+}
+
+// Quaternion of a proper rotation matrix (Shepperd's method: largest pivot for stability).
+Quat fromMatrix(const Mat3& r);
+
+// exp: rotation vector (axis * angle, radians) -> unit quaternion.
+inline Quat expMap(const Vec3& theta) {
+  const double phi = theta.norm();
+  const double half = 0.5 * phi;
+  // sin(phi/2)/phi, with its Taylor series near zero.
+  const double s = phi < 1e-6 ? 0.5 - phi * phi / 48.0 : std::sin(half) / phi;
+  return {std::cos(half), s * theta.x(), s * theta.y(), s * theta.z()};
+}
+
+// Rotation about a unit axis by `angle`.
+inline Quat axisAngle(const Vec3& unitAxis, double angle) { return expMap(angle * unitAxis); }
+
+// Principal log: rotation vector with angle in [0, pi].
+Vec3 logMap(const Quat& q);
+
+// Log on a tracked branch: among all rotation vectors (phi + 2 pi k) n of the rotation q, the one
+// nearest to `previous`. Lets a relative rotation wind through any number of turns
+// continuously (the principal log would wrap at pi). Singular only when |result| = 2 pi k, k != 0.
+Vec3 trackedLog(const Quat& q, const Vec3& previous);
+
+// Cross-product matrix [v]x with [v]x u = v x u.
+inline Mat3 skew(const Vec3& v) {
+  Mat3 m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+// J_l^{-T}(theta) m = m + 1/2 theta x m + beta theta x (theta x m) with
+// beta = 1/phi^2 - cot(phi/2)/(2 phi): the transpose of the inverse left Jacobian of SO(3).
+// If R -> exp([eps]) R, then log(R) -> theta + J_l^{-1}(theta) eps to first order.
+inline Vec3 inverseLeftJacobianTransposeApply(const Vec3& theta, const Vec3& m) {
+  const double phi2 = theta.squaredNorm();
+  double beta;
+  if (phi2 < 1e-8) {
+    beta = 1.0 / 12.0 + phi2 / 720.0;
+  } else {
+    const double phi = std::sqrt(phi2);
+    beta = 1.0 / phi2 - 1.0 / (2.0 * phi * std::tan(0.5 * phi));
+  }
+  const Vec3 tm = theta.cross(m);
+  return m + 0.5 * tm + beta * theta.cross(tm);
+}
+
+}  // namespace mesochain::mdem

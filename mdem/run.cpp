@@ -1,0 +1,75 @@
+#include "mdem/run.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "mdem/output.hpp"
+
+namespace mesochain::mdem {
+
+RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
+                    const std::function<void(double)>& progress) {
+  Simulation sim(scene);
+  const OutputSpec& o = scene.output;
+  const std::filesystem::path dir(outputDirectory);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(scene.source, "key output.directory", dir.string(), "a directory that can be created");
+  auto prepare = [&](const std::string& name) {
+    const std::filesystem::path p = dir / name;
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+    return p.string();
+  };
+
+  std::unique_ptr<EnergyCsvWriter> csv;
+  if (!o.energiesCsv.empty()) csv = std::make_unique<EnergyCsvWriter>(prepare(o.energiesCsv), o.probes);
+  std::ofstream xyz;
+  if (!o.xyz.empty()) {
+    xyz.open(prepare(o.xyz));
+    if (!xyz) throw InputError(scene.source, "key output.xyz", o.xyz, "a writable file");
+  }
+  const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
+  long frame = 0;
+  auto record = [&](bool force) {
+    const long k = sim.stepCount();
+    if (csv && (force || k % o.energiesEvery == 0)) csv->write(k, sim.time(), sim.energies(), sim.bodies());
+    if (force || k % o.framesEvery == 0) {
+      if (xyz) writeXyzFrame(xyz, sim.bodies(), scene.elementTypes, sim.time(), k);
+      if (!vtkPrefix.empty())
+        writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time());
+      ++frame;
+    }
+  };
+
+  RunSummary r;
+  r.timeStep = sim.timeStep();
+  r.criticalTimeStep = sim.stability().criticalTimeStep;
+  record(true);
+  const long every = std::max(1L, scene.run.steps / 200);
+  while (sim.stepCount() < scene.run.steps) {
+    sim.step();
+    const long k = sim.stepCount();
+    const bool last = k == scene.run.steps;
+    if (scene.run.stopKineticEnergy > 0.0 && k >= scene.run.minimumSteps &&
+        k % scene.run.checkEvery == 0) {
+      const Energies e = sim.energies();
+      if (e.kineticTranslational + e.kineticRotational < scene.run.stopKineticEnergy) {
+        r.stoppedByCriterion = true;
+        record(true);
+        break;
+      }
+    }
+    record(last);
+    if (progress && (k % every == 0 || last)) progress(static_cast<double>(k) / scene.run.steps);
+  }
+  r.steps = sim.stepCount();
+  r.time = sim.time();
+  r.finalEnergies = sim.energies();
+  return r;
+}
+
+}  // namespace mesochain::mdem

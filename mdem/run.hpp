@@ -1,0 +1,24 @@
+#pragma once
+// Runs a loaded scene with its outputs: the loop the `mesochain dem` command drives.
+#include <functional>
+#include <string>
+
+#include "mdem/scene.hpp"
+#include "mdem/simulation.hpp"
+
+namespace mesochain::mdem {
+
+struct RunSummary {
+  long steps = 0;
+  double time = 0.0;             // ns
+  bool stoppedByCriterion = false;
+  Energies finalEnergies;
+  double timeStep = 0.0;
+  double criticalTimeStep = 0.0;
+};
+
+// Progress callback receives the fraction of the maximum step count done.
+RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
+                    const std::function<void(double)>& progress);
+
+}  // namespace mesochain::mdem

@@ -1,0 +1,79 @@
+#pragma once
+// A scene: element and bond types, elements, bonds, boundary conditions, the effects to
+// simulate, run control and outputs. Built by scene_file.cpp from a TOML file, or directly in
+// C++ (tests, benchmarks) with the helpers below. Units: mdem/units.hpp.
+#include <string>
+#include <vector>
+
+#include "mdem/boundary.hpp"
+#include "mdem/parallel_bond.hpp"
+
+namespace mesochain::mdem {
+
+// Bond parameters. Either stiffness per unit area directly (k_n, k_s in MPa/nm), or moduli
+// (MPa) from which k_n = Y / l, k_s = G / l with l the bond's rest length (centre distance).
+// The cross-section is that of element a: brick h x w (h along the bond x axis), cylinder disc.
+struct BondType {
+  std::string name;
+  bool fromModuli = false;
+  double youngModulus = 0.0;  // MPa
+  double shearModulus = 0.0;  // MPa
+  BondStiffness stiffness;    // MPa/nm (when !fromModuli)
+
+  BondStiffness stiffnessFor(double restLength) const;
+};
+
+struct RunControl {
+  double timeStep = 0.0;              // ns
+  double timeStepFraction = 0.0;      // > 0: time step = this fraction of the critical one
+  long steps = 0;                     // maximum number of steps
+  double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)
+  long checkEvery = 100;              // steps between stop checks
+  long minimumSteps = 0;              // no stop before this step
+};
+
+struct OutputSpec {
+  std::string directory = ".";        // relative to the working directory
+  std::string energiesCsv;            // "" = none
+  long energiesEvery = 100;
+  std::string xyz;                    // extended XYZ trajectory, "" = none
+  std::string vtkPrefix;              // legacy VTK frames PREFIX_000000.vtk, "" = none
+  long framesEvery = 1000;
+  std::vector<int> probes;            // elements whose displacement and rotation go to the CSV
+};
+
+struct Scene {
+  std::string source = "<scene>";     // file name, for messages
+  std::vector<ElementType> elementTypes;
+  std::vector<BondType> bondTypes;
+  Bodies bodies;
+  std::vector<Bond> bonds;
+  std::vector<std::string> effects;   // "bonds", "local_damping", "viscous_damping"
+  double localDampingAlpha = 0.7;
+  double viscousRate = 0.0;           // 1/ns
+  Boundary boundary;
+  RunControl run;
+  OutputSpec output;
+};
+
+// Cross-section of a bond whose first element has type t.
+BondSection sectionOf(const ElementType& t);
+
+// Adds a bond of type bondType between existing elements a and b (rest state = current).
+void addBond(Scene& scene, int a, int b, int bondType);
+
+// Filament generator: `count` elements of one type, centres at start + k * spacing * direction,
+// body z along direction, body x (thickness) along thicknessAxis projected normal to direction;
+// consecutive elements bonded. Returns the index of the first element.
+struct FilamentSpec {
+  int elementType = 0;
+  int bondType = 0;
+  int count = 0;
+  Vec3 start = Vec3::Zero();
+  Vec3 direction = Vec3::UnitZ();
+  Vec3 thicknessAxis = Vec3::UnitX();
+  double spacing = 0.0;  // nm; 0 = the element length
+};
+int addFilament(Scene& scene, const FilamentSpec& spec);
+
+}  // namespace mesochain::mdem

@@ -1,0 +1,317 @@
+#include "mdem/scene_file.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "mdem/toml_reader.hpp"
+#include "mdem/units.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+
+int findType(const std::vector<std::string>& names, const TomlTable& t, const std::string& key) {
+  const std::string n = t.string(key);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == n) return static_cast<int>(i);
+  std::string list;
+  for (const auto& x : names) list += (list.empty() ? "" : ", ") + x;
+  t.fail(key, "\"" + n + "\"", list.empty() ? "a defined type (none is defined)"
+                                            : "one of the defined types: " + list);
+}
+
+// Element index: 0-based, negative counts from the end (-1 = last).
+int elementIndex(long i, int count, const TomlTable& t, const std::string& key) {
+  const long j = i < 0 ? i + count : i;
+  if (j < 0 || j >= count)
+    t.fail(key, "element " + std::to_string(i),
+           "an existing element: 0 .. " + std::to_string(count - 1) + " or -1 .. -" +
+               std::to_string(count) + " (there are " + std::to_string(count) + ")");
+  return static_cast<int>(j);
+}
+
+int oneElement(const TomlTable& t, int count) {
+  return elementIndex(t.integer("element"), count, t, "element");
+}
+
+ElementType readElementType(const TomlTable& t) {
+  t.allowOnly({"name", "shape", "thickness_nm", "width_nm", "radius_nm", "length_nm", "mass_ag",
+               "density_kg_per_m3"});
+  ElementType e;
+  e.name = t.string("name");
+  const std::string shape = t.string("shape", "brick");
+  if (shape == "brick") {
+    e.shape = Shape::Brick;
+    e.thickness = t.positive("thickness_nm");
+    e.width = t.positive("width_nm");
+    if (t.has("radius_nm")) t.fail("radius_nm", "a radius for a brick", "thickness_nm and width_nm");
+  } else if (shape == "cylinder") {
+    e.shape = Shape::Cylinder;
+    e.radius = t.positive("radius_nm");
+    if (t.has("thickness_nm") || t.has("width_nm"))
+      t.fail(t.has("width_nm") ? "width_nm" : "thickness_nm", "a brick dimension for a cylinder",
+             "radius_nm only");
+  } else {
+    t.fail("shape", "\"" + shape + "\"", "\"brick\" or \"cylinder\"");
+  }
+  e.length = t.positive("length_nm");
+  if (t.has("mass_ag") == t.has("density_kg_per_m3"))
+    t.fail("mass_ag", t.has("mass_ag") ? "both mass_ag and density_kg_per_m3" : "neither",
+           "exactly one of mass_ag, density_kg_per_m3");
+  e.mass = t.has("mass_ag") ? t.positive("mass_ag")
+                            : t.positive("density_kg_per_m3") * units::kKgPerM3 * e.volume();
+  return e;
+}
+
+BondType readBondType(const TomlTable& t) {
+  t.allowOnly({"name", "young_modulus_MPa", "shear_modulus_MPa", "normal_stiffness_MPa_per_nm",
+               "shear_stiffness_MPa_per_nm"});
+  BondType b;
+  b.name = t.string("name");
+  const bool moduli = t.has("young_modulus_MPa") || t.has("shear_modulus_MPa");
+  const bool direct = t.has("normal_stiffness_MPa_per_nm") || t.has("shear_stiffness_MPa_per_nm");
+  if (moduli == direct)
+    t.fail("young_modulus_MPa", moduli ? "both moduli and stiffnesses" : "neither",
+           "young_modulus_MPa + shear_modulus_MPa, or normal_stiffness_MPa_per_nm + "
+           "shear_stiffness_MPa_per_nm");
+  b.fromModuli = moduli;
+  if (moduli) {
+    b.youngModulus = t.positive("young_modulus_MPa");
+    b.shearModulus = t.positive("shear_modulus_MPa");
+  } else {
+    b.stiffness.kn = t.positive("normal_stiffness_MPa_per_nm");
+    b.stiffness.ks = t.positive("shear_stiffness_MPa_per_nm");
+  }
+  return b;
+}
+
+std::vector<std::string> typeNames(const auto& types) {
+  std::vector<std::string> n;
+  for (const auto& t : types) n.push_back(t.name);
+  return n;
+}
+
+Quat readOrientation(const TomlTable& t) {
+  if (!t.has("orientation")) return {};
+  const std::vector<double> q = t.numbers("orientation");
+  if (q.size() != 4) t.fail("orientation", std::to_string(q.size()) + " numbers", "[w, x, y, z]");
+  const Quat r{q[0], q[1], q[2], q[3]};
+  if (r.norm() < 1e-12) t.fail("orientation", "a zero quaternion", "a non-zero quaternion");
+  return normalized(r);
+}
+
+void readElements(const TomlTable& root, Scene& s) {
+  if (!root.has("elements")) return;
+  const auto names = typeNames(s.elementTypes);
+  for (const TomlTable& t : root.tables("elements")) {
+    t.allowOnly({"type", "position_nm", "orientation", "velocity_nm_per_ns",
+                 "angular_velocity_rad_per_ns"});
+    const int type = findType(names, t, "type");
+    s.bodies.add(type, s.elementTypes[type], t.vec3("position_nm"), readOrientation(t));
+    const int i = s.bodies.size() - 1;
+    s.bodies.velocity[i] = t.vec3("velocity_nm_per_ns", Vec3::Zero());
+    s.bodies.setAngularVelocityWorld(i, t.vec3("angular_velocity_rad_per_ns", Vec3::Zero()));
+  }
+}
+
+void readFilaments(const TomlTable& root, Scene& s) {
+  if (!root.has("filaments")) return;
+  for (const TomlTable& t : root.tables("filaments")) {
+    t.allowOnly({"element_type", "bond_type", "count", "start_nm", "direction", "thickness_axis",
+                 "spacing_nm"});
+    FilamentSpec f;
+    f.elementType = findType(typeNames(s.elementTypes), t, "element_type");
+    f.bondType = findType(typeNames(s.bondTypes), t, "bond_type");
+    const long n = t.integer("count");
+    if (n < 1) t.fail("count", std::to_string(n), "at least 1 element");
+    f.count = static_cast<int>(n);
+    f.start = t.vec3("start_nm", Vec3::Zero());
+    f.direction = t.vec3("direction", Vec3::UnitZ());
+    if (f.direction.norm() < 1e-12) t.fail("direction", "a zero vector", "a direction");
+    f.thicknessAxis = t.vec3("thickness_axis", Vec3::UnitX());
+    if (t.has("spacing_nm")) f.spacing = t.positive("spacing_nm");
+    addFilament(s, f);
+  }
+}
+
+void readBonds(const TomlTable& root, Scene& s) {
+  if (!root.has("bonds")) return;
+  const auto names = typeNames(s.bondTypes);
+  for (const TomlTable& t : root.tables("bonds")) {
+    t.allowOnly({"elements", "type"});
+    const std::vector<long> e = t.integers("elements");
+    if (e.size() != 2) t.fail("elements", std::to_string(e.size()) + " indices", "[a, b]");
+    const int a = elementIndex(e[0], s.bodies.size(), t, "elements");
+    const int b = elementIndex(e[1], s.bodies.size(), t, "elements");
+    if (a == b) t.fail("elements", "a bond of an element to itself", "two different elements");
+    if ((s.bodies.position[a] - s.bodies.position[b]).norm() < 1e-9)
+      t.fail("elements", "two elements at the same position", "distinct centres");
+    addBond(s, a, b, findType(names, t, "type"));
+  }
+}
+
+void readBoundary(const TomlTable& root, Scene& s) {
+  const int n = s.bodies.size();
+  if (root.has("fixed")) {
+    for (const TomlTable& t : root.tables("fixed")) {
+      t.allowOnly({"element", "dofs"});
+      FixedDofs f;
+      f.element = oneElement(t, n);
+      const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
+      for (const std::string& d : t.has("dofs") ? t.strings("dofs") : std::vector<std::string>{"all"}) {
+        bool ok = d == "all";
+        if (ok) f.fixed.fill(true);
+        for (int k = 0; k < 6; ++k)
+          if (d == names[k]) f.fixed[k] = ok = true;
+        if (!ok) t.fail("dofs", "\"" + d + "\"", "\"all\" or any of x, y, z, rx, ry, rz");
+      }
+      s.boundary.fixed.push_back(f);
+    }
+  }
+  if (root.has("loads")) {
+    for (const TomlTable& t : root.tables("loads")) {
+      t.allowOnly({"element", "force_pN", "moment_pN_nm", "frame", "ramp_ns"});
+      Load l;
+      l.element = oneElement(t, n);
+      l.force = t.vec3("force_pN", Vec3::Zero());
+      l.moment = t.vec3("moment_pN_nm", Vec3::Zero());
+      const std::string frame = t.string("frame", "fixed");
+      if (frame != "fixed" && frame != "following")
+        t.fail("frame", "\"" + frame + "\"", "\"fixed\" or \"following\"");
+      l.following = frame == "following";
+      l.ramp = t.nonNegative("ramp_ns", 0.0);
+      s.boundary.loads.push_back(l);
+    }
+  }
+  if (root.has("prescribed")) {
+    for (const TomlTable& t : root.tables("prescribed")) {
+      t.allowOnly({"element", "velocity_nm_per_ns", "angular_velocity_rad_per_ns", "ramp_ns",
+                   "translate_by_nm", "rotate_by_rad", "duration_ns"});
+      Prescribed p;
+      p.element = oneElement(t, n);
+      if (t.has("duration_ns")) {
+        p.duration = t.positive("duration_ns");
+        for (const char* k : {"velocity_nm_per_ns", "angular_velocity_rad_per_ns", "ramp_ns"})
+          if (t.has(k)) t.fail(k, "a velocity-mode key with duration_ns", "translate_by_nm / rotate_by_rad");
+        p.translateBy = t.vec3("translate_by_nm", Vec3::Zero());
+        p.rotateBy = t.vec3("rotate_by_rad", Vec3::Zero());
+      } else {
+        for (const char* k : {"translate_by_nm", "rotate_by_rad"})
+          if (t.has(k)) t.fail(k, "a displacement without duration_ns", "duration_ns as well");
+        p.velocity = t.vec3("velocity_nm_per_ns", Vec3::Zero());
+        p.angularVelocity = t.vec3("angular_velocity_rad_per_ns", Vec3::Zero());
+        p.ramp = t.nonNegative("ramp_ns", 0.0);
+      }
+      s.boundary.prescribed.push_back(p);
+    }
+  }
+  // One kinematic rule per element.
+  std::vector<int> seen(n, 0);
+  for (const auto& f : s.boundary.fixed) ++seen[f.element];
+  for (const auto& p : s.boundary.prescribed) ++seen[p.element];
+  for (int i = 0; i < n; ++i)
+    if (seen[i] > 1)
+      throw InputError(s.source, "keys fixed / prescribed",
+                       "element " + std::to_string(i) + " constrained more than once",
+                       "at most one [[fixed]] or [[prescribed]] entry per element");
+}
+
+void readRunAndOutput(const TomlTable& root, Scene& s) {
+  const TomlTable run = root.table("run");
+  run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "stop_kinetic_energy_zJ",
+                 "check_every", "minimum_steps"});
+  if (run.has("time_step_ns") == run.has("time_step_fraction"))
+    run.fail("time_step_ns", run.has("time_step_ns") ? "both time_step_ns and time_step_fraction" : "neither",
+             "exactly one of time_step_ns, time_step_fraction");
+  if (run.has("time_step_ns")) s.run.timeStep = run.positive("time_step_ns");
+  if (run.has("time_step_fraction")) {
+    s.run.timeStepFraction = run.positive("time_step_fraction");
+    if (s.run.timeStepFraction > 1.0)
+      run.fail("time_step_fraction", std::to_string(s.run.timeStepFraction), "a fraction in (0, 1]");
+  }
+  s.run.steps = run.integer("steps");
+  if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
+  s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;
+  s.run.checkEvery = run.integer("check_every", 100);
+  if (s.run.checkEvery < 1) run.fail("check_every", std::to_string(s.run.checkEvery), "at least 1");
+  s.run.minimumSteps = run.integer("minimum_steps", 0);
+  if (!root.has("output")) return;
+  const TomlTable out = root.table("output");
+  out.allowOnly({"directory", "energies_csv", "energies_every", "xyz", "vtk_prefix",
+                 "frames_every", "probes"});
+  s.output.directory = out.string("directory", ".");
+  s.output.energiesCsv = out.string("energies_csv", "");
+  s.output.energiesEvery = out.integer("energies_every", 100);
+  s.output.xyz = out.string("xyz", "");
+  s.output.vtkPrefix = out.string("vtk_prefix", "");
+  s.output.framesEvery = out.integer("frames_every", 1000);
+  for (const char* k : {"energies_every", "frames_every"})
+    if (out.integer(k, 1) < 1) out.fail(k, std::to_string(out.integer(k)), "at least 1");
+  if (out.has("probes"))
+    for (long p : out.integers("probes"))
+      s.output.probes.push_back(elementIndex(p, s.bodies.size(), out, "probes"));
+}
+
+}  // namespace
+
+void readModelTables(const TomlTable& root, Scene& s) {
+  if (root.has("element_types"))
+    for (const TomlTable& t : root.tables("element_types")) s.elementTypes.push_back(readElementType(t));
+  if (root.has("bond_types"))
+    for (const TomlTable& t : root.tables("bond_types")) s.bondTypes.push_back(readBondType(t));
+}
+
+Scene loadScene(const std::string& path) {
+  const toml::value data = parseTomlFile(path);
+  const TomlTable root(data, path, "");
+  root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
+                  "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
+                  "viscous_damping", "run", "output"});
+  if (root.integer("format") != 1)
+    root.fail("format", std::to_string(root.integer("format")), "1");
+  Scene s;
+  s.source = path;
+  if (root.has("model")) {
+    std::filesystem::path model = root.string("model");
+    if (model.is_relative()) model = std::filesystem::path(path).parent_path() / model;
+    if (!std::filesystem::is_regular_file(model))
+      root.fail("model", "\"" + model.string() + "\", which does not exist", "an existing model file");
+    const toml::value m = parseTomlFile(model.string());
+    const TomlTable mroot(m, model.string(), "");
+    mroot.allowOnly({"format", "element_types", "bond_types"});
+    if (mroot.integer("format", 1) != 1) mroot.fail("format", std::to_string(mroot.integer("format")), "1");
+    readModelTables(mroot, s);
+  }
+  readModelTables(root, s);
+  s.effects = root.strings("effects");
+  readElements(root, s);
+  readFilaments(root, s);
+  readBonds(root, s);
+  readBoundary(root, s);
+  if (root.has("local_damping")) {
+    const TomlTable t = root.table("local_damping");
+    t.allowOnly({"alpha"});
+    s.localDampingAlpha = t.number("alpha");
+    if (s.localDampingAlpha < 0.0 || s.localDampingAlpha >= 1.0)
+      t.fail("alpha", std::to_string(s.localDampingAlpha), "a number in [0, 1)");
+  }
+  if (root.has("viscous_damping")) {
+    const TomlTable t = root.table("viscous_damping");
+    t.allowOnly({"rate_per_ns"});
+    s.viscousRate = t.positive("rate_per_ns");
+  }
+  for (const char* e : {"local_damping", "viscous_damping"}) {
+    const bool named = std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end();
+    if (root.has(e) && !named)
+      root.fail(e, "parameters for an effect that is not listed", "\"" + std::string(e) + "\" in effects");
+    if (!root.has(e) && named && std::string(e) == "viscous_damping")
+      root.fail(e, "nothing", "a [viscous_damping] table with rate_per_ns");
+  }
+  readRunAndOutput(root, s);
+  if (s.bodies.size() == 0)
+    throw InputError(path, "keys elements / filaments", "no elements", "at least one element");
+  return s;
+}
+
+}  // namespace mesochain::mdem

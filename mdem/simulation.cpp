@@ -1,0 +1,122 @@
+#include "mdem/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "mdem/damping.hpp"
+#include "mdem/integrator.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+bool named(const std::vector<std::string>& list, const char* name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+}  // namespace
+
+Simulation::Simulation(const Scene& scene)
+    : state_{scene.bodies, 0.0},
+      kinematics_(scene.boundary, scene.bodies.size()),
+      h_(scene.run.timeStep) {
+  for (const std::string& e : scene.effects)
+    if (e != "bonds" && e != "local_damping" && e != "viscous_damping")
+      throw InputError(scene.source, "key effects", "\"" + e + "\"",
+                       "one of \"bonds\", \"local_damping\", \"viscous_damping\"");
+  // Fixed build order: conservative effects, loads, then dissipation.
+  if (named(scene.effects, "bonds")) {
+    auto b = std::make_unique<BondEffect>(scene.bonds, scene.bodies.size());
+    bondEffect_ = b.get();
+    effects_.push_back(std::move(b));
+  }
+  if (!scene.boundary.loads.empty())
+    effects_.push_back(std::make_unique<LoadEffect>(scene.boundary.loads, scene.bodies));
+  if (named(scene.effects, "local_damping"))
+    effects_.push_back(std::make_unique<LocalDamping>(scene.localDampingAlpha));
+  if (named(scene.effects, "viscous_damping"))
+    effects_.push_back(std::make_unique<ViscousDamping>(scene.viscousRate));
+
+  limit_ = criticalTimeStep(state_.bodies, bondEffect_ ? bondEffect_->bonds() : std::vector<Bond>{},
+                            kinematics_);
+  if (scene.run.timeStepFraction > 0.0) {
+    if (scene.run.timeStepFraction > 1.0)
+      throw InputError(scene.source, "key run.time_step_fraction",
+                       fmt::format("{}", scene.run.timeStepFraction), "a fraction in (0, 1]");
+    h_ = scene.run.timeStepFraction * limit_.criticalTimeStep;
+    if (!std::isfinite(h_))
+      throw InputError(scene.source, "key run.time_step_fraction", "a scene without bonds",
+                       "run.time_step_ns instead (no critical step to take a fraction of)");
+  }
+  if (!(h_ > 0.0))
+    throw InputError(scene.source, "key run.time_step_ns", fmt::format("{}", h_),
+                     "a positive time step");
+  if (h_ > limit_.criticalTimeStep)
+    throw InputError(scene.source, "key run.time_step_ns", fmt::format("{:.6g} ns", h_),
+                     fmt::format("at most the critical time step {:.6g} ns (2/omega_max, "
+                                 "omega_max = {:.6g} rad/ns bounded from the bond stiffness "
+                                 "and the {} of element {})",
+                                 limit_.criticalTimeStep, limit_.omegaMax,
+                                 limit_.rotational ? "moments of inertia" : "mass",
+                                 limit_.element));
+  kinematics_.apply(state_.bodies, 0.0);
+  computeForces(true);
+}
+
+void Simulation::computeForces(bool withDamping) {
+  Bodies& s = state_.bodies;
+  std::fill(s.force.begin(), s.force.end(), Vec3::Zero());
+  std::fill(s.torque.begin(), s.torque.end(), Vec3::Zero());
+  for (auto& e : effects_) {
+    if (!withDamping && (e->name() == "local_damping" || e->name() == "viscous_damping")) continue;
+    e->addForces(state_);
+  }
+  kinematics_.clearConstrainedForces(s);
+}
+
+void Simulation::step() {
+  Bodies& s = state_.bodies;
+  kick(s, 0.5 * h_);
+  kinematics_.apply(s, state_.time + 0.5 * h_);
+  drift(s, h_, kinematics_.kinematicRotation);
+  state_.time += h_;
+  ++steps_;
+  computeForces(true);
+  kick(s, 0.5 * h_);
+  kinematics_.apply(s, state_.time);
+}
+
+Energies Simulation::energies() const {
+  Energies e;
+  e.kineticTranslational = kineticTranslational(state_.bodies);
+  e.kineticRotational = kineticRotational(state_.bodies);
+  for (const auto& f : effects_) e += f->energy(state_);
+  return e;
+}
+
+std::vector<std::string> Simulation::effectNames() const {
+  std::vector<std::string> n;
+  for (const auto& e : effects_) n.push_back(e->name());
+  return n;
+}
+
+const std::vector<Bond>& Simulation::bonds() const {
+  static const std::vector<Bond> kNone;
+  return bondEffect_ ? bondEffect_->bonds() : kNone;
+}
+
+std::pair<double, double> Simulation::residual() {
+  const std::vector<Vec3> force = state_.bodies.force, torque = state_.bodies.torque;
+  computeForces(false);
+  double f = 0.0, m = 0.0;
+  for (int i = 0; i < state_.bodies.size(); ++i) {
+    f = std::max(f, state_.bodies.force[i].norm());
+    m = std::max(m, state_.bodies.torque[i].norm());
+  }
+  state_.bodies.force = force;  // restore the forces the next kick expects
+  state_.bodies.torque = torque;
+  return {f, m};
+}
+
+}  // namespace mesochain::mdem
