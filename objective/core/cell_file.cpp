@@ -1,0 +1,240 @@
+#include "objective/core/cell_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "objective/core/cell_file_sections.hpp"
+#include "objective/core/text_reader.hpp"
+#include "objective/core/toml_table.hpp"
+
+#ifndef MESOCHAIN_PARAMS_DIR
+#error "MESOCHAIN_PARAMS_DIR must be defined (objective/core/CMakeLists.txt)"
+#endif
+#ifndef MESOCHAIN_PROJECT_DIR
+#error "MESOCHAIN_PROJECT_DIR must be defined (objective/core/CMakeLists.txt)"
+#endif
+
+namespace mesochain::objective {
+
+namespace fs = std::filesystem;
+using detail::TomlTable;
+
+std::string parameterSetsDirectory() { return MESOCHAIN_PARAMS_DIR; }
+
+std::map<std::string, std::string> parameterSetFiles(const std::string& set,
+                                                     const std::vector<std::string>& species,
+                                                     const std::string& source,
+                                                     const std::string& where) {
+  const bool plainName =
+      !set.empty() && set != "." && set != ".." && std::all_of(set.begin(), set.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+      });
+  const fs::path dir = fs::path(parameterSetsDirectory()) / set;
+  std::error_code ec;
+  if (!plainName || !fs::is_directory(dir, ec)) {
+    std::vector<std::string> sets;
+    for (const auto& e : fs::directory_iterator(parameterSetsDirectory(), ec))
+      if (e.is_directory()) sets.push_back(e.path().filename().string());
+    std::sort(sets.begin(), sets.end());
+    std::string list;
+    for (const auto& s : sets) list += (list.empty() ? "" : ", ") + ("\"" + s + "\"");
+    throw InputError(source, where, "set \"" + set + "\"",
+                     "the name of a parameter set in " + parameterSetsDirectory() + ": " +
+                         (list.empty() ? "(none installed)" : list));
+  }
+  std::map<std::string, std::string> files;
+  for (const auto& a : species)
+    for (const auto& b : species) {
+      const fs::path f = dir / (a + "-" + b + ".skf");
+      if (!fs::is_regular_file(f, ec))
+        throw InputError(source, where,
+                         fmt::format("no table for the pair {}-{} in set \"{}\" ({} is missing)", a,
+                                     b, set, f.string()),
+                         "a set with a table for every ordered pair of the elements of the "
+                         "cell, or an explicit \"" +
+                             a + "-" + b + "\" = \"path\" entry");
+      files[a + "-" + b] = f.lexically_normal().string();
+    }
+  return files;
+}
+
+namespace {
+
+// [parameters]: a set and/or explicit "A-B" = "path" entries, max_angular_momentum.
+void readParameters(const TomlTable& root, CellInput& in) {
+  const auto t = root.table("parameters");
+  if (!t)
+    root.missing("parameters",
+                 "a table [parameters] with set = \"pbc-0-3\" or \"A-B\" = \"path\" entries");
+  const std::vector<std::string>& species = in.cell.speciesNames;
+  auto isSpecies = [&](const std::string& s) {
+    return std::find(species.begin(), species.end(), s) != species.end();
+  };
+  for (const std::string& key : t->keys()) {
+    if (key == "set" || key == "max_angular_momentum") continue;
+    const auto dash = key.find('-');
+    const bool pairKey = dash != std::string::npos && detail::isElementName(key.substr(0, dash)) &&
+                         detail::isElementName(key.substr(dash + 1));
+    if (!pairKey)
+      t->fail(key, "an unknown key '" + key + "'",
+              "one of the keys of [parameters]: set, max_angular_momentum, or element pairs "
+              "such as \"C-H\" = \"path/C-H.skf\"");
+    const std::string a = key.substr(0, dash), b = key.substr(dash + 1);
+    if (!isSpecies(a) || !isSpecies(b))
+      t->fail(key, "the pair " + key + " of an element that is not in the cell",
+              "pairs of the elements of the cell only");
+  }
+  if (t->has("set")) {
+    in.parameterSet = t->string("set", "the name of a parameter set such as \"pbc-0-3\"");
+    in.parameterFiles = parameterSetFiles(in.parameterSet, species, in.source, t->where("set"));
+  }
+  const fs::path cellDir = fs::path(in.source).parent_path();
+  for (const std::string& key : t->keys()) {
+    if (key == "set" || key == "max_angular_momentum") continue;
+    const std::string file = t->string(key, "the path of the .skf table (a string)");
+    std::error_code ec;
+    fs::path p = cellDir / file;
+    if (!fs::is_regular_file(p, ec)) p = fs::path(MESOCHAIN_PROJECT_DIR) / file;
+    if (file.empty() || !fs::is_regular_file(p, ec))
+      t->fail(key,
+              "\"" + file +
+                  "\", which exists neither relative to the cell file nor to the "
+                  "project root " MESOCHAIN_PROJECT_DIR,
+              "the path of an existing .skf table");
+    in.parameterFiles[key] = p.lexically_normal().string();
+  }
+  for (const auto& a : species)
+    for (const auto& b : species)
+      if (!in.parameterFiles.count(a + "-" + b))
+        throw InputError(in.source, "table [parameters]",
+                         "no table for the element pair " + a + "-" + b,
+                         "set = \"NAME\" or an entry \"" + a + "-" + b + "\" = \"path\"");
+  if (t->has("max_angular_momentum")) {
+    const toml::value& v = t->at("max_angular_momentum");
+    if (!v.is_table())
+      t->fail("max_angular_momentum", detail::describe(v),
+              "an inline table such as { C = \"p\", H = \"s\" }");
+    const TomlTable m(in.source, v, t->dotted("max_angular_momentum"));
+    for (const std::string& el : m.keys()) {
+      if (!isSpecies(el))
+        m.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
+      const std::string shell = m.string(el, "\"s\", \"p\", \"d\" or \"f\"");
+      const std::string shells = "spdf";
+      if (shell.size() != 1 || shells.find(shell[0]) == std::string::npos)
+        m.fail(el, "\"" + shell + "\"", "\"s\", \"p\", \"d\" or \"f\"");
+      in.maxAngularMomentum[el] = static_cast<int>(shells.find(shell[0]));
+    }
+  }
+}
+
+void readDispersion(const TomlTable& root, CellInput& in) {
+  const auto t = root.table("dispersion");
+  if (!t) return;  // documented default: no dispersion
+  t->allowOnly({"model", "epsilon", "r0", "cutoff"});
+  DispersionInput& d = in.dispersion;
+  d.model = t->string("model", "\"none\" or \"lj\"");
+  if (d.model == "none") {
+    for (const char* k : {"epsilon", "r0", "cutoff"})
+      if (t->has(k)) t->fail(k, "a value with model = \"none\"", "no parameters for \"none\"");
+    return;
+  }
+  if (d.model != "lj") t->fail("model", "\"" + d.model + "\"", "\"none\" or \"lj\"");
+  auto positive = [&](const char* key, double def, const char* unit) {
+    if (!t->has(key)) return def;
+    const double x = t->number(key, fmt::format("a positive number ({})", unit));
+    if (!(x > 0.0))
+      t->fail(key, fmt::format("{} {}", x, unit), fmt::format("a positive number ({})", unit));
+    return x;
+  };
+  d.epsilon =
+      positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
+  d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;
+  d.cutoff = positive("cutoff", kDefaultLjCutoffAngstrom, "Å") * units::kAngstromInBohr;
+  if (!(d.cutoff > d.r0))
+    t->fail(t->has("cutoff") ? "cutoff" : "r0",
+            fmt::format("cutoff {:.4g} Å <= r0 {:.4g} Å", d.cutoff * units::kBohrInAngstrom,
+                        d.r0 * units::kBohrInAngstrom),
+            "a cutoff well beyond r0 (default 30 Å)");
+}
+
+void readTask(const TomlTable& root, CellInput& in) {
+  const auto t = root.table("task");
+  if (!t) return;  // documented default: type = "energy"
+  t->allowOnly({"type", "force_tolerance", "max_steps", "relax_translation"});
+  TaskInput& task = in.task;
+  task.type = t->string("type", "\"energy\", \"forces\" or \"relax\"");
+  if (task.type != "energy" && task.type != "forces" && task.type != "relax")
+    t->fail("type", "\"" + task.type + "\"", "\"energy\", \"forces\" or \"relax\"");
+  if (task.type != "relax")
+    for (const char* k : {"force_tolerance", "max_steps", "relax_translation"})
+      if (t->has(k))
+        t->fail(k, "a relaxation setting with type = \"" + task.type + "\"",
+                "force_tolerance, max_steps and relax_translation only with type = \"relax\"");
+  if (t->has("force_tolerance")) {
+    task.forceTolerance = t->number("force_tolerance", "a positive force (Ha/Bohr)");
+    if (!(task.forceTolerance > 0.0))
+      t->fail("force_tolerance", fmt::format("{}", task.forceTolerance),
+              "a positive force (Ha/Bohr)");
+  }
+  if (t->has("max_steps")) {
+    const long n = t->integer("max_steps", "a positive integer");
+    if (n < 1 || n > 100000000L) t->fail("max_steps", std::to_string(n), "a positive integer");
+    task.maxSteps = static_cast<int>(n);
+  }
+  if (t->has("relax_translation")) {
+    task.relaxTranslation = t->boolean("relax_translation", "true or false");
+    if (task.relaxTranslation && in.cell.symmetry.isRing())
+      t->fail("relax_translation", "true for a closed ring (translation 0)",
+              "relax_translation = true only for a screw with translation > 0");
+  }
+}
+
+}  // namespace
+
+CellInput readCellFile(const std::string& path) {
+  CellInput in;
+  in.source = path;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(path, "the cell file does not exist or is not a regular file");
+  toml::value data;
+  try {
+    data = toml::parse(path);
+  } catch (const toml::syntax_error& e) {
+    throw InputError(path, fmt::format("line {}", e.location().line()), "invalid TOML",
+                     std::string("valid TOML (") + e.what() + ")");
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("the file cannot be read as TOML: ") + e.what());
+  }
+  const TomlTable root(path, data, "");
+  root.allowOnly({"format", "geometry", "builder", "symmetry", "kpoints", "electrons", "parameters",
+                  "dispersion", "task"});
+  const long format = root.integer("format", "format = 1");
+  if (format != 1) root.fail("format", std::to_string(format), "format = 1");
+
+  detail::readStructure(root, in);
+  detail::readKPoints(root, in);
+
+  const auto el = root.table("electrons");
+  if (!el) root.missing("electrons", "a table [electrons] with temperature (K)");
+  el->allowOnly({"temperature"});
+  const double kelvin = el->number("temperature", "a positive temperature (K)");
+  if (!(kelvin > 0.0))
+    el->fail("temperature", fmt::format("{} K", kelvin), "a positive temperature (K)");
+  in.electronicTemperature = kelvin * units::kBoltzmannHartreePerKelvin;
+
+  readParameters(root, in);
+  readDispersion(root, in);
+  readTask(root, in);
+  in.cell.validate(path, kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
+  return in;
+}
+
+}  // namespace mesochain::objective

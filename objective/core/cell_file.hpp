@@ -1,0 +1,70 @@
+#pragma once
+// The objective-cell input file (TOML, format = 1): geometry, symmetry, k-points, electronic
+// temperature, parameter tables, dispersion and task. Every key, unit and default is documented
+// in docs/cell-file.md. Values in the file carry explicit units (Å, degrees, K, kcal/mol,
+// Ha/Bohr); CellInput holds atomic units (Bohr, radians, Hartree).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "objective/core/cell.hpp"
+#include "objective/core/kgrid.hpp"
+
+namespace mesochain::objective {
+
+// Defaults of model = "lj" (E(r) = epsilon [(r0/r)^12 - 2 (r0/r)^6], minimum -epsilon at r0).
+inline constexpr double kDefaultLjEpsilonKcalPerMol = 0.069;
+inline constexpr double kDefaultLjR0Angstrom = 3.80;
+// At 30 Å the neglected r^-6 tail of a graphene-like sheet (0.38 atoms/Å^2) is
+// pi * sigma * epsilon * r0^6 / r_c^4 ~ 3e-4 kcal/mol per atom; see docs/cell-file.md.
+inline constexpr double kDefaultLjCutoffAngstrom = 30.0;
+// Default C-C bond length of the [builder] table (Å).
+inline constexpr double kDefaultBondLengthAngstrom = 1.42;
+// Atoms (and images) closer than this are an input error (Å).
+inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
+
+struct DispersionInput {
+  std::string model = "none";  // "none" | "lj"
+  double epsilon = 0;          // Hartree
+  double r0 = 0;               // Bohr
+  double cutoff = 0;           // Bohr
+};
+
+struct TaskInput {
+  std::string type = "energy";    // energy | forces | relax
+  double forceTolerance = 1e-4;   // Hartree/Bohr (relax)
+  int maxSteps = 500;             // relax
+  bool relaxTranslation = false;  // relax: also optimise the screw translation T
+};
+
+struct CellInput {
+  std::string source;  // the file path
+  ObjectiveCell cell;
+  int helicalKPoints = 1;
+  AngularSampling angular;
+  double electronicTemperature = 0;  // k_B T in Hartree (input in K)
+  // "A-B" -> resolved path, for all ordered pairs of the species in the cell.
+  std::map<std::string, std::string> parameterFiles;
+  // The name of the parameter set when `[parameters] set = ...` was used (else empty).
+  std::string parameterSet;
+  std::map<std::string, int> maxAngularMomentum;  // optional per species: 0 = s, 1 = p, ...
+  DispersionInput dispersion;
+  TaskInput task;
+};
+
+CellInput readCellFile(const std::string& path);
+// Writes a cell file that reads back to the same CellInput: inline atoms in Å, the symmetry,
+// k-points, temperature, `set = parameterSet` (when non-empty) plus explicit entries for the
+// tables that differ from the set, dispersion and task.
+void writeCellFile(const std::string& path, const CellInput& input);
+
+// The directory of the parameter sets (the project's params/).
+std::string parameterSetsDirectory();
+// "A-B" -> params/<set>/A-B.skf for every ordered pair of `species`; InputError naming
+// `source` and `where` when the set or a table does not exist.
+std::map<std::string, std::string> parameterSetFiles(const std::string& set,
+                                                     const std::vector<std::string>& species,
+                                                     const std::string& source,
+                                                     const std::string& where);
+
+}  // namespace mesochain::objective

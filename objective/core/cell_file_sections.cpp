@@ -1,0 +1,262 @@
+#include "objective/core/cell_file_sections.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "objective/core/gen_file.hpp"
+#include "objective/core/nanotube_builder.hpp"
+#include "objective/core/text_reader.hpp"
+#include "objective/core/xyz_file.hpp"
+
+namespace mesochain::objective::detail {
+
+namespace fs = std::filesystem;
+using units::kAngstromInBohr;
+using units::kBohrInAngstrom;
+using units::kDegree;
+
+namespace {
+
+// Inline atoms = [ ["C", x, y, z], ... ] in the given unit.
+ObjectiveCell readInlineAtoms(const TomlTable& g) {
+  const std::string unit = g.string("unit", "unit = \"angstrom\" or \"bohr\" for inline atoms");
+  if (unit != "angstrom" && unit != "bohr")
+    g.fail("unit", "\"" + unit + "\"", "\"angstrom\" or \"bohr\"");
+  const double scale = unit == "angstrom" ? kAngstromInBohr : 1.0;
+  const toml::value& atoms = g.at("atoms");
+  const std::string expected = "an array of atoms [\"C\", x, y, z] (" + unit + ")";
+  if (!atoms.is_array() || atoms.as_array().empty())
+    g.fail("atoms", describe(atoms) + (atoms.is_array() ? " that is empty" : ""), expected);
+  ObjectiveCell cell;
+  const auto& list = atoms.as_array();
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const toml::value& e = list[k];
+    auto bad = [&](const std::string& found) {
+      throw InputError(
+          g.source(), fmt::format("key {}, atom {} (line {})", g.dotted("atoms"), k + 1, lineOf(e)),
+          found, "an atom [\"Element\", x, y, z] with x, y, z in " + unit);
+    };
+    if (!e.is_array() || e.as_array().size() != 4) bad(describe(e) + " (not 4 entries)");
+    const auto& f = e.as_array();
+    if (!f[0].is_string() || !isElementName(f[0].as_string().str)) bad("element " + describe(f[0]));
+    Eigen::Vector3d x;
+    for (int c = 0; c < 3; ++c) {
+      const auto v = asNumber(f[c + 1]);
+      if (!v) bad("coordinate " + describe(f[c + 1]));
+      if (!std::isfinite(*v)) bad("a non-finite coordinate");
+      x[c] = *v * scale;
+    }
+    cell.addAtom(f[0].as_string().str, x);
+  }
+  return cell;
+}
+
+// [geometry]: returns the cell and whether the geometry carried its own symmetry.
+ObjectiveCell readGeometry(const TomlTable& g, const std::string& cellPath, bool& carries) {
+  g.allowOnly({"file", "atoms", "unit"});
+  if (g.has("file") == g.has("atoms"))
+    g.fail(g.has("file") ? "atoms" : "file",
+           g.has("file") ? "both file and atoms" : "neither file nor atoms",
+           "either file = \"x.gen\" (or .xyz) or inline atoms = [[\"C\", x, y, z], ...]");
+  if (g.has("atoms")) {
+    carries = false;
+    return readInlineAtoms(g);
+  }
+  if (g.has("unit"))
+    g.fail("unit", "unit together with file", "no unit: .gen and .xyz coordinates are always in Å");
+  const std::string file = g.string("file", "the path of a .gen or .xyz file");
+  const fs::path p = fs::path(cellPath).parent_path() / file;
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".gen" && ext != ".xyz")
+    g.fail("file", "\"" + file + "\"", "a file ending in .gen or .xyz");
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec))
+    g.fail("file", "\"" + file + "\", which does not exist (looked for " + p.string() + ")",
+           "an existing geometry file (the path is relative to the cell file)");
+  if (ext == ".gen") {
+    GenGeometry gen = readGenFile(p.lexically_normal().string());
+    carries = gen.type != GenType::Cluster;
+    return std::move(gen.cell);
+  }
+  XyzFrame frame = readXyzFile(p.lexically_normal().string());
+  carries = frame.hasSymmetry;
+  return std::move(frame.cell);
+}
+
+struct SymmetryKeys {
+  std::optional<double> translation;  // Å
+  std::optional<double> twist;        // degrees
+  std::optional<long> rotationOrder;
+};
+
+SymmetryKeys readSymmetryKeys(const TomlTable& s) {
+  s.allowOnly({"translation", "twist", "rotation_order"});
+  SymmetryKeys k;
+  if (s.has("translation")) {
+    k.translation = s.number("translation", "a translation >= 0 (Å; 0 closes a ring)");
+    if (*k.translation < 0.0)
+      s.fail("translation", fmt::format("{} Å", *k.translation),
+             "a translation >= 0 (Å; 0 closes a ring)");
+  }
+  if (s.has("twist")) k.twist = s.number("twist", "a twist angle (degrees)");
+  if (s.has("rotation_order")) {
+    k.rotationOrder = s.integer("rotation_order", "an integer rotation order N_a >= 1");
+    if (*k.rotationOrder < 1 || *k.rotationOrder > 1000000000L)
+      s.fail("rotation_order", std::to_string(*k.rotationOrder),
+             "an integer rotation order N_a >= 1");
+  }
+  return k;
+}
+
+// Distance of an angle (degrees) from the nearest multiple of `step` degrees.
+double offMultiple(double angle, double step) {
+  const double m = angle / step;
+  return std::abs(m - std::round(m)) * step;
+}
+
+Symmetry symmetryFromKeys(const TomlTable& s, const SymmetryKeys& k) {
+  for (const char* key : {"translation", "twist", "rotation_order"})
+    if (!s.has(key))
+      s.missing(key,
+                "translation (Å), twist (degrees) and rotation_order: the geometry has "
+                "no symmetry of its own");
+  const int na = static_cast<int>(*k.rotationOrder);
+  if (*k.translation == 0.0 && offMultiple(*k.twist, 360.0 / na) > 1e-9 * 360.0)
+    s.fail("twist", fmt::format("{} degrees with translation = 0", *k.twist),
+           fmt::format("a multiple of 360/N_a = {} degrees (translation 0 is a closed ring of "
+                       "N_a = {} copies)",
+                       360.0 / na, na));
+  return Symmetry::fromParameters(*k.translation * kAngstromInBohr, *k.twist * kDegree, na,
+                                  s.source().c_str());
+}
+
+// Keys given together with a geometry file that has its own symmetry must agree with it.
+void checkAgreement(const TomlTable& s, const SymmetryKeys& k, const Symmetry& g,
+                    const std::string& file) {
+  const double tg = g.translation() * kBohrInAngstrom;
+  const int na = g.rotationOrder();
+  const double twg = g.isRing() ? 360.0 / na : g.twist() / kDegree;
+  const std::string expected = "the value in " + file + " (or leave the key out)";
+  if (k.translation && std::abs(*k.translation - tg) > 1e-6)
+    s.fail("translation", fmt::format("{} Å, but {} has {} Å", *k.translation, file, tg), expected);
+  if (k.rotationOrder && *k.rotationOrder != na)
+    s.fail("rotation_order", fmt::format("{}, but {} has {}", *k.rotationOrder, file, na),
+           expected);
+  // Twists that differ by a multiple of 360/N_a describe the same group.
+  if (k.twist && offMultiple(*k.twist - twg, 360.0 / na) > 1e-6)
+    s.fail(
+        "twist",
+        fmt::format("{} degrees, but {} has {} degrees (modulo 360/{})", *k.twist, file, twg, na),
+        expected);
+}
+
+ObjectiveCell readBuilder(const TomlTable& b) {
+  b.allowOnly({"type", "n", "m", "cell", "bond_length", "use_rotation"});
+  const std::string type = b.string("type", "type = \"nanotube\"");
+  if (type != "nanotube") b.fail("type", "\"" + type + "\"", "\"nanotube\"");
+  const long n = b.integer("n", "the chiral index n >= 1");
+  if (n < 1 || n > 10000) b.fail("n", std::to_string(n), "the chiral index 1 <= n <= 10000");
+  const long m = b.integer("m", "the chiral index m >= 0");
+  if (m < 0 || m > 10000) b.fail("m", std::to_string(m), "the chiral index 0 <= m <= 10000");
+  const std::string kind = b.string("cell", "\"helical\" or \"translational\"");
+  if (kind != "helical" && kind != "translational")
+    b.fail("cell", "\"" + kind + "\"", "\"helical\" or \"translational\"");
+  double bond = kDefaultBondLengthAngstrom;
+  if (b.has("bond_length")) {
+    bond = b.number("bond_length", "a positive bond length (Å)");
+    if (!(bond > 0.0))
+      b.fail("bond_length", fmt::format("{} Å", bond), "a positive bond length (Å)");
+  }
+  bool rotation = false;
+  if (b.has("use_rotation")) {
+    if (kind != "translational")
+      b.fail("use_rotation", "use_rotation with cell = \"helical\"",
+             "use_rotation only with cell = \"translational\" (the helical cell always uses "
+             "the rotation)");
+    rotation = b.boolean("use_rotation", "true or false");
+  }
+  const int ni = static_cast<int>(n), mi = static_cast<int>(m);
+  return kind == "helical" ? buildNanotubeHelical(ni, mi, bond * kAngstromInBohr)
+                           : buildNanotubeTranslational(ni, mi, bond * kAngstromInBohr, rotation);
+}
+
+}  // namespace
+
+void readStructure(const TomlTable& root, CellInput& in) {
+  const auto geometry = root.table("geometry");
+  const auto builder = root.table("builder");
+  const auto symmetry = root.table("symmetry");
+  if (geometry && builder)
+    root.fail("builder", "both [geometry] and [builder]", "one of [geometry] or [builder]");
+  if (!geometry && !builder)
+    root.missing("geometry", "a table [geometry] (file or inline atoms) or [builder]");
+  if (builder) {
+    if (symmetry)
+      root.fail("symmetry", "[symmetry] together with [builder]",
+                "no [symmetry]: the builder sets the symmetry of the cell it builds");
+    in.cell = readBuilder(*builder);
+    return;
+  }
+  bool carries = false;
+  in.cell = readGeometry(*geometry, in.source, carries);
+  if (carries) {
+    if (symmetry)
+      checkAgreement(*symmetry, readSymmetryKeys(*symmetry), in.cell.symmetry,
+                     geometry->string("file", "a geometry file"));
+    return;
+  }
+  if (!symmetry)
+    root.missing("symmetry",
+                 "a table [symmetry] with translation (Å), twist (degrees) and rotation_order "
+                 "(translation = 0, twist = 0, rotation_order = 1 is an isolated cluster)");
+  in.cell.symmetry = symmetryFromKeys(*symmetry, readSymmetryKeys(*symmetry));
+}
+
+void readKPoints(const TomlTable& root, CellInput& in) {
+  const bool ring = in.cell.symmetry.isRing();
+  const auto k = root.table("kpoints");
+  if (!k) {
+    if (!ring)
+      root.missing("kpoints",
+                   "a table [kpoints] with helical = N (the screw needs helical "
+                   "k-points)");
+    return;  // a ring: every angular quantum number, no helical k-points
+  }
+  k->allowOnly({"helical", "angular"});
+  if (k->has("helical")) {
+    const long n = k->integer("helical", "a number of helical k-points >= 1");
+    if (n < 1 || n > 1000000)
+      k->fail("helical", std::to_string(n), "a number of helical k-points >= 1");
+    if (ring && n != 1)
+      k->fail("helical", fmt::format("{} for a closed ring (translation 0)", n),
+              "helical = 1 or no helical key: a ring has no helical wave number");
+    in.helicalKPoints = static_cast<int>(n);
+  } else if (!ring) {
+    k->missing("helical", "the number of helical k-points (an integer >= 1)");
+  }
+  if (k->has("angular")) {
+    const toml::value& v = k->at("angular");
+    const std::string expected = "\"all\" or a number of sampled angular quantum numbers >= 1";
+    if (v.is_string()) {
+      if (v.as_string().str != "all") k->fail("angular", describe(v), expected);
+      in.angular.samples = 0;
+    } else if (v.is_integer()) {
+      if (v.as_integer() < 1 || v.as_integer() > 1000000000L)
+        k->fail("angular", describe(v), expected);
+      in.angular.samples = static_cast<int>(v.as_integer());
+    } else {
+      k->fail("angular", describe(v), expected);
+    }
+  }
+}
+
+}  // namespace mesochain::objective::detail

@@ -1,0 +1,14 @@
+#pragma once
+// Parts of the cell-file reader (cell_file.cpp): the structure ([geometry] or [builder], and
+// [symmetry]) and [kpoints].
+#include "objective/core/cell_file.hpp"
+#include "objective/core/toml_table.hpp"
+
+namespace mesochain::objective::detail {
+
+// Fills in.cell (geometry and symmetry) from [geometry] + [symmetry] or [builder].
+void readStructure(const TomlTable& root, CellInput& in);
+// Fills in.helicalKPoints and in.angular; needs in.cell.symmetry.
+void readKPoints(const TomlTable& root, CellInput& in);
+
+}  // namespace mesochain::objective::detail

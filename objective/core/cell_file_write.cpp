@@ -1,0 +1,109 @@
+// writeCellFile: a cell file (docs/cell-file.md) that reads back to the same CellInput.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "objective/core/cell_file.hpp"
+
+namespace mesochain::objective {
+
+namespace {
+
+// A TOML basic string.
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04X}", static_cast<int>(c));
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// Shortest decimal form that reads back to the same double, always with a '.' or exponent
+// so TOML sees a float.
+std::string real(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+}  // namespace
+
+void writeCellFile(const std::string& path, const CellInput& in) {
+  const ObjectiveCell& cell = in.cell;
+  const Symmetry& s = cell.symmetry;
+  if (cell.atomCount() == 0) throw InputError(path, "geometry", "no atoms", "at least one atom");
+  if (!(in.electronicTemperature > 0.0))
+    throw InputError(path, "key electrons.temperature", fmt::format("{}", in.electronicTemperature),
+                     "a positive electronic temperature");
+  std::ofstream out(path);
+  if (!out) throw InputError(path, "the file cannot be written");
+  out << "# mesochain objective-cell input; keys and units: docs/cell-file.md\n";
+  out << "format = 1\n\n[geometry]\nunit = \"angstrom\"\natoms = [\n";
+  for (int a = 0; a < cell.atomCount(); ++a) {
+    const Eigen::Vector3d x = cell.positions.col(a) * units::kBohrInAngstrom;
+    out << fmt::format("  [{}, {}, {}, {}],\n", quoted(cell.speciesOf(a)), real(x.x()), real(x.y()),
+                       real(x.z()));
+  }
+  out << "]\n\n[symmetry]\n";
+  const double twist = s.isRing() ? 360.0 / s.rotationOrder() : s.twist() / units::kDegree;
+  out << fmt::format("translation = {}  # Å\ntwist = {}  # degrees\nrotation_order = {}\n\n",
+                     real(s.translation() * units::kBohrInAngstrom), real(twist),
+                     s.rotationOrder());
+  out << "[kpoints]\n";
+  if (!s.isRing()) out << fmt::format("helical = {}\n", in.helicalKPoints);
+  if (in.angular.samples > 0)
+    out << fmt::format("angular = {}\n", in.angular.samples);
+  else
+    out << "angular = \"all\"\n";
+  out << fmt::format("\n[electrons]\ntemperature = {}  # K\n\n[parameters]\n",
+                     real(in.electronicTemperature / units::kBoltzmannHartreePerKelvin));
+  std::map<std::string, std::string> fromSet;
+  if (!in.parameterSet.empty()) {
+    out << "set = " << quoted(in.parameterSet) << "\n";
+    fromSet = parameterSetFiles(in.parameterSet, cell.speciesNames, path, "[parameters] set");
+  }
+  for (const auto& [pair, file] : in.parameterFiles) {
+    auto it = fromSet.find(pair);
+    if (it != fromSet.end() && it->second == file) continue;
+    out << quoted(pair) << " = "
+        << quoted(std::filesystem::absolute(file).lexically_normal().string()) << "\n";
+  }
+  if (!in.maxAngularMomentum.empty()) {
+    out << "max_angular_momentum = {";
+    bool first = true;
+    for (const auto& [el, l] : in.maxAngularMomentum) {
+      if (l < 0 || l > 3)
+        throw InputError(path, "max_angular_momentum." + el, std::to_string(l), "0..3 (s..f)");
+      out << (first ? " " : ", ") << el << " = \""
+          << "spdf"[l] << "\"";
+      first = false;
+    }
+    out << " }\n";
+  }
+  const DispersionInput& d = in.dispersion;
+  out << "\n[dispersion]\nmodel = " << quoted(d.model) << "\n";
+  if (d.model == "lj")
+    out << fmt::format("epsilon = {}  # kcal/mol\nr0 = {}  # Å\ncutoff = {}  # Å\n",
+                       real(d.epsilon * units::kHartreeInKcalPerMol),
+                       real(d.r0 * units::kBohrInAngstrom),
+                       real(d.cutoff * units::kBohrInAngstrom));
+  const TaskInput& t = in.task;
+  out << "\n[task]\ntype = " << quoted(t.type) << "\n";
+  if (t.type == "relax")
+    out << fmt::format("force_tolerance = {}  # Ha/Bohr\nmax_steps = {}\nrelax_translation = {}\n",
+                       real(t.forceTolerance), t.maxSteps, t.relaxTranslation);
+  if (!out) throw InputError(path, "writing the file failed");
+}
+
+}  // namespace mesochain::objective
