@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-./build/mesochain run examples/cnt55.toml --json build/cnt55-result.json
+./build/mesochain run examples/cnt55.toml --json build/cnt55-result.json --structure build/cnt55-relaxed
