@@ -6,9 +6,10 @@ Command makeVersionCommand();
 Command makeRunCommand();
 Command makeDemCommand();
 Command makeBenchCommand();
+Command makeBuildCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app
