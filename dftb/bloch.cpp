@@ -115,13 +115,15 @@ void accumulatePairBlocks(const OrbitalLayout& layout, const ImageList& images,
                           const HelicalKGrid& grid, const HelicalKPoint& k, double weight,
                           const ComplexMatrix& m, std::vector<OrbitalBlock>& blocks) {
   const auto& pairs = images.pairs();
+  // m holds the lower triangle of a Hermitian matrix: m(r, c) = conj(m(c, r)) for r < c.
+  auto element = [&m](int r, int c) { return r >= c ? m(r, c) : std::conj(m(c, r)); };
   for (size_t p = 0; p < pairs.size(); ++p) {
     const ImagePair& q = pairs[p];
     const std::complex<double> phase = weight * std::polar(1.0, grid.phase(k, q.g));
     const int oi = layout.offset[q.i], oj = layout.offset[q.j];
     const int ni = layout.count[q.i], nj = layout.count[q.j];
     for (int b = 0; b < nj; ++b)
-      for (int a = 0; a < ni; ++a) blocks[p](a, b) += (phase * m(oj + b, oi + a)).real();
+      for (int a = 0; a < ni; ++a) blocks[p](a, b) += (phase * element(oj + b, oi + a)).real();
   }
 }
 

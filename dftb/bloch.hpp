@@ -54,7 +54,8 @@ void assembleBlochReal(const objective::ObjectiveCell& cell, const ParameterSet&
                        Eigen::MatrixXd& hk, Eigen::MatrixXd& sk);
 
 // Adds weight * Re(exp(i theta_g) m[(j,b),(i,a)]) into blocks[p](a,b) for every pair p, for the
-// density (m = rho_k) or energy-weighted density (m = rho^E_k).
+// density (m = rho_k) or energy-weighted density (m = rho^E_k). Only the lower triangle of the
+// Hermitian m is read.
 void accumulatePairBlocks(const OrbitalLayout& layout, const objective::ImageList& images,
                           const objective::HelicalKGrid& grid, const objective::HelicalKPoint& k,
                           double weight, const ComplexMatrix& m, std::vector<OrbitalBlock>& blocks);

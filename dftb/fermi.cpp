@@ -12,17 +12,34 @@ namespace mesochain::dftb {
 namespace {
 double softplus(double x) { return std::max(x, 0.0) + std::log1p(std::exp(-std::abs(x))); }
 
-double electronCount(const std::vector<Eigen::VectorXd>& levels,
-                     const std::vector<double>& weights, double mu, double kT) {
-  double n = 0.0;
-  for (size_t k = 0; k < levels.size(); ++k) {
-    double nk = 0.0;
-    for (Eigen::Index i = 0; i < levels[k].size(); ++i)
-      nk += fermiOccupation((levels[k][i] - mu) / kT);
-    n += weights[k] * nk;
+// Levels of all k-points sorted once, with their k weights and prefix sums, so that an electron
+// count touches only the levels within +-40 kT of mu: further below a level holds 2 electrons
+// and further above none, to a relative 1e-17.
+class SortedLevels {
+ public:
+  SortedLevels(const std::vector<Eigen::VectorXd>& levels, const std::vector<double>& weights) {
+    for (size_t k = 0; k < levels.size(); ++k)
+      for (Eigen::Index i = 0; i < levels[k].size(); ++i) items_.push_back({levels[k][i], weights[k]});
+    std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) { return a.e < b.e; });
+    prefix_.resize(items_.size() + 1, 0.0);
+    for (size_t i = 0; i < items_.size(); ++i) prefix_[i + 1] = prefix_[i] + items_[i].w;
   }
-  return n;
-}
+  double electronCount(double mu, double kT) const {
+    auto below = std::lower_bound(items_.begin(), items_.end(), mu - 40.0 * kT,
+                                  [](const Item& a, double e) { return a.e < e; });
+    double n = 2.0 * prefix_[static_cast<size_t>(below - items_.begin())];
+    for (auto it = below; it != items_.end() && it->e <= mu + 40.0 * kT; ++it)
+      n += it->w * fermiOccupation((it->e - mu) / kT);
+    return n;
+  }
+
+ private:
+  struct Item {
+    double e, w;
+  };
+  std::vector<Item> items_;
+  std::vector<double> prefix_;
+};
 }  // namespace
 
 double fermiOccupation(double x) {
@@ -54,6 +71,7 @@ Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
   if (electrons < 0.0 || electrons > 2.0 * static_cast<double>(capacity) + 1e-9)
     throw NumericalError("cannot place " + std::to_string(electrons) + " electrons in " +
                          std::to_string(capacity) + " levels per k-point");
+  const SortedLevels sorted(levels, weights);
   const double margin = 60.0 * kT + 1.0;
   // Lower end: the smallest mu with N(mu) >= N_el; upper end: the largest with N(mu) <= N_el.
   // Where N is strictly increasing both are the root; where it is flat to double precision (a
@@ -64,7 +82,7 @@ Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
     for (int it = 0; it < 2200; ++it) {
       const double m = 0.5 * (a + b);
       if (m <= a || m >= b) break;
-      const double n = electronCount(levels, weights, m, kT);
+      const double n = sorted.electronCount(m, kT);
       if (lower ? (n >= electrons) : (n > electrons)) b = m; else a = m;
     }
     return 0.5 * (a + b);
@@ -85,7 +103,7 @@ Filling fillFermiDirac(const std::vector<Eigen::VectorXd>& levels,
       }
     if (std::isfinite(below) && std::isfinite(above)) {
       const double mid = 0.5 * (below + above);
-      if (electronCount(levels, weights, mid, kT) == electrons) out.fermiLevel = mid;
+      if (sorted.electronCount(mid, kT) == electrons) out.fermiLevel = mid;
     }
   }
   out.highestOccupied = -std::numeric_limits<double>::infinity();
