@@ -34,11 +34,11 @@ int build(const BuildOptions& o) {
   in.cell = o.cell == "helical" ? objective::buildNanotubeHelical(o.n, o.m, bond)
                                 : objective::buildNanotubeTranslational(o.n, o.m, bond, false);
   in.source = o.output;
-  // Unless asked otherwise: kappa points that sample a 100 Å length of tube (N T = 100 Å),
-  // which converges metallic tubes at 300 K to about 1e-6 Ha/atom (mesochain bench kpoints).
+  // Unless asked otherwise: kappa points that sample a 300 Å length of tube (N T = 300 Å),
+  // which converges metallic tubes at 300 K to about 1e-8 Ha/atom (mesochain bench kpoints).
   in.helicalKPoints =
       o.kpoints > 0 ? o.kpoints
-                    : std::max(8, static_cast<int>(std::ceil(100.0 * units::kAngstromInBohr /
+                    : std::max(8, static_cast<int>(std::ceil(300.0 * units::kAngstromInBohr /
                                                              in.cell.symmetry.translation())));
   in.electronicTemperature = o.kelvin * units::kBoltzmannHartreePerKelvin;
   in.parameterSet = o.set;
