@@ -65,11 +65,14 @@ void addOnsite(const ObjectiveCell& cell, const ParameterSet& params, const Orbi
 }
 }  // namespace
 
-void assembleBloch(const ObjectiveCell& cell, const ParameterSet& params,
-                   const OrbitalLayout& layout, const ImageList& images,
-                   const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
-                   const HelicalKGrid& grid, const HelicalKPoint& k, ComplexMatrix& hk,
-                   ComplexMatrix& sk) {
+namespace {
+// H(k), S(k) from the real-space blocks: one loop for complex and real k-points; `phase` gives
+// the Bloch factor of a group element (complex, or +-1 for a real k-point).
+template <class Matrix, class Phase>
+void assembleWith(const ObjectiveCell& cell, const ParameterSet& params,
+                  const OrbitalLayout& layout, const ImageList& images,
+                  const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
+                  Phase phase, Matrix& hk, Matrix& sk) {
   hk.setZero();
   sk.setZero();
   addOnsite(cell, params, layout, hk, sk);
@@ -77,15 +80,25 @@ void assembleBloch(const ObjectiveCell& cell, const ParameterSet& params,
   for (size_t p = 0; p < pairs.size(); ++p) {
     const ImagePair& q = pairs[p];
     if (q.i < q.j) continue;  // strict upper triangle: LAPACK reads the lower one
-    const std::complex<double> phase = std::polar(1.0, grid.phase(k, q.g));
+    const auto f = phase(q.g);
     const int oi = layout.offset[q.i], oj = layout.offset[q.j];
     const int ni = layout.count[q.i], nj = layout.count[q.j];
     for (int b = 0; b < nj; ++b)
       for (int a = 0; a < ni; ++a) {
-        hk(oi + a, oj + b) += phase * h[p](a, b);
-        sk(oi + a, oj + b) += phase * s[p](a, b);
+        hk(oi + a, oj + b) += f * h[p](a, b);
+        sk(oi + a, oj + b) += f * s[p](a, b);
       }
   }
+}
+}  // namespace
+
+void assembleBloch(const ObjectiveCell& cell, const ParameterSet& params,
+                   const OrbitalLayout& layout, const ImageList& images,
+                   const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
+                   const HelicalKGrid& grid, const HelicalKPoint& k, ComplexMatrix& hk,
+                   ComplexMatrix& sk) {
+  assembleWith(cell, params, layout, images, h, s,
+               [&](const GroupElement& g) { return std::polar(1.0, grid.phase(k, g)); }, hk, sk);
 }
 
 void assembleBlochReal(const ObjectiveCell& cell, const ParameterSet& params,
@@ -93,22 +106,9 @@ void assembleBlochReal(const ObjectiveCell& cell, const ParameterSet& params,
                        const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
                        const HelicalKGrid& grid, const HelicalKPoint& k, Eigen::MatrixXd& hk,
                        Eigen::MatrixXd& sk) {
-  hk.setZero();
-  sk.setZero();
-  addOnsite(cell, params, layout, hk, sk);
-  const auto& pairs = images.pairs();
-  for (size_t p = 0; p < pairs.size(); ++p) {
-    const ImagePair& q = pairs[p];
-    if (q.i < q.j) continue;
-    const double phase = std::cos(grid.phase(k, q.g));  // exactly +-1 for a real k-point
-    const int oi = layout.offset[q.i], oj = layout.offset[q.j];
-    const int ni = layout.count[q.i], nj = layout.count[q.j];
-    for (int b = 0; b < nj; ++b)
-      for (int a = 0; a < ni; ++a) {
-        hk(oi + a, oj + b) += phase * h[p](a, b);
-        sk(oi + a, oj + b) += phase * s[p](a, b);
-      }
-  }
+  // Exactly +-1 for a real k-point.
+  assembleWith(cell, params, layout, images, h, s,
+               [&](const GroupElement& g) { return std::cos(grid.phase(k, g)); }, hk, sk);
 }
 
 void accumulatePairBlocks(const OrbitalLayout& layout, const ImageList& images,
