@@ -65,6 +65,9 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
   if (r.extras.count("dispersion_tail_estimate"))
     j["energies_hartree"]["dispersion_tail_estimate"] =
         perCellAndAtom(r.extras.at("dispersion_tail_estimate"), n);
+  if (r.extras.count("angular_sampling_error_estimate"))
+    j["energies_hartree"]["angular_sampling_error_estimate"] =
+        perCellAndAtom(r.extras.at("angular_sampling_error_estimate"), n);
   j["electrons_per_cell"] = extra(r, "electrons");
   j["fermi_level_hartree"] = extra(r, "fermi_level");
   const double homo = extra(r, "homo"), lumo = extra(r, "lumo");

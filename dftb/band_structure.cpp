@@ -144,6 +144,27 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   const auto t3 = Clock::now();
 
   out.energy = filling.bandEnergy - filling.entropyTerm;
+  if (grid.angularSampled() && grid.angularCount() >= 2) {
+    // Error estimate of the sampled angular sum: the free energies of the two interleaved half
+    // grids (even and odd sample index), each filled on its own, differ by more than the error
+    // of the full set for a smooth integrand; half their difference is reported.
+    double half[2];
+    for (int parity = 0; parity < 2; ++parity) {
+      std::vector<Eigen::VectorXd> lv;
+      std::vector<double> wt;
+      double sum = 0;
+      for (int k = 0; k < nk; ++k)
+        if (kpts[k].angularIndex % 2 == parity) {
+          lv.push_back(levels[k]);
+          wt.push_back(weights[k]);
+          sum += weights[k];
+        }
+      for (double& x : wt) x /= sum;
+      const Filling f = fillFermiDirac(lv, wt, electrons, settings_.electronicTemperature);
+      half[parity] = f.bandEnergy - f.entropyTerm;
+    }
+    out.extras["angular_sampling_error_estimate"] = 0.5 * std::abs(half[0] - half[1]);
+  }
   out.extras["band_energy"] = filling.bandEnergy;
   out.extras["entropy_term"] = filling.entropyTerm;
   out.extras["fermi_level"] = filling.fermiLevel;

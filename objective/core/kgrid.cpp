@@ -55,14 +55,17 @@ HelicalKGrid::HelicalKGrid(const Symmetry& symmetry, int nKappa, AngularSampling
       for (int s = 0; s < m; ++s)
         kept.emplace_back(static_cast<int>(std::lround((s + 0.5) * 0.5 * na / m)), 1.0 / m);
       nMu_ = m;
+      sampled_ = true;
     }
+    int index = 0;
     for (auto [mu, w] : kept)
-      points_.push_back(HelicalKPoint{0.0, mu, w, isMultipleOfPi(2.0 * kPi * mu / na)});
+      points_.push_back(HelicalKPoint{0.0, mu, w, isMultipleOfPi(2.0 * kPi * mu / na), index++});
     return;
   }
   nKappa_ = nKappa;
   const std::vector<int> mus = angularSet(na, angular);
   nMu_ = static_cast<int>(mus.size());
+  sampled_ = nMu_ < na;
   const double muWeight = 1.0 / nMu_;
   // Midpoint grid kappa_m = -pi + (m + 1/2) 2 pi / N; keep kappa >= 0.
   for (int m = 0; m < nKappa; ++m) {
@@ -70,9 +73,10 @@ HelicalKGrid::HelicalKGrid(const Symmetry& symmetry, int nKappa, AngularSampling
     if (kappa < -1e-14) continue;
     const bool zero = std::abs(kappa) < 1e-14;
     const double w = (zero ? 1.0 : 2.0) / nKappa * muWeight;
-    for (int mu : mus) {
+    for (int index = 0; index < nMu_; ++index) {
+      const int mu = mus[index];
       const bool real = isMultipleOfPi(kappa) && isMultipleOfPi(2.0 * kPi * mu / na);
-      points_.push_back(HelicalKPoint{zero ? 0.0 : kappa, mu, w, real});
+      points_.push_back(HelicalKPoint{zero ? 0.0 : kappa, mu, w, real, index});
     }
   }
 }

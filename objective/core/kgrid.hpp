@@ -22,6 +22,9 @@ struct HelicalKPoint {
   // True when every Bloch phase exp(i theta_g) of this point is real (+-1): the Hamiltonian is
   // then real symmetric.
   bool realPhases = false;
+  // Position of mu in the angular set (0..angularCount()-1); with sampled mu, the points of even
+  // and of odd index form two interleaved half grids whose disagreement estimates the error.
+  int angularIndex = 0;
 };
 
 struct AngularSampling {
@@ -38,6 +41,8 @@ class HelicalKGrid {
   const std::vector<HelicalKPoint>& points() const { return points_; }
   int kappaCount() const { return nKappa_; }
   int angularCount() const { return nMu_; }
+  // True when mu is sampled rather than summed exactly over 0..N_a-1.
+  bool angularSampled() const { return sampled_; }
   // Phase angle theta_g for point k and group element g.
   double phase(const HelicalKPoint& k, const GroupElement& g) const;
 
@@ -45,6 +50,7 @@ class HelicalKGrid {
   int rotationOrder_ = 1;
   int nKappa_ = 1;
   int nMu_ = 1;
+  bool sampled_ = false;
   std::vector<HelicalKPoint> points_;
 };
 
