@@ -14,9 +14,6 @@
 // k loop runs (weak: absent when another BLAS is in use).
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 extern "C" int openblas_get_num_threads() __attribute__((weak));
-extern "C" void zherk_(const char* uplo, const char* trans, const int* n, const int* k,
-                       const double* alpha, const std::complex<double>* a, const int* lda,
-                       const double* beta, std::complex<double>* c, const int* ldc);
 
 namespace mesochain::dftb {
 
@@ -46,7 +43,7 @@ struct BlasThreadsOff {
 
 // Buffers of one thread, sized once before the k loop.
 struct ThreadWork {
-  ComplexMatrix sk, x, rho, rhoE;
+  ComplexMatrix sk, x, y;
   Eigen::MatrixXd hr, sr;
   GeneralizedEigensolver solver;
   std::vector<OrbitalBlock> p, w;
@@ -98,8 +95,7 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
     }
     if (wantDensity) {
       w.x.resize(n, n);
-      w.rho.resize(n, n);
-      w.rhoE.resize(n, n);
+      w.y.resize(n, n);
       w.p.assign(images.pairs().size(), OrbitalBlock::Zero());
       w.w.assign(images.pairs().size(), OrbitalBlock::Zero());
     }
@@ -197,22 +193,11 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
       const Eigen::VectorXd& e = levels[k];
       int nocc = 0;
       while (nocc < n && f[nocc] > 1e-15) ++nocc;  // ascending levels: occupations decrease
-      int nneg = 0;
-      while (nneg < nocc && e[nneg] < 0.0) ++nneg;
-      // rho = X X^+ with X = C sqrt(f); rho^E = X diag(e) X^+ = X_+ X_+^+ - X_- X_-^+ with the
-      // columns scaled by sqrt|e|. Hermitian rank-k updates (BLAS zherk) fill the lower
-      // triangles only: half the work of general products.
       const auto& c = vectors[k];
-      w.x.leftCols(nocc) = c.leftCols(nocc) * f.head(nocc).cwiseSqrt().asDiagonal();
-      const double one = 1.0, minusOne = -1.0, zero = 0.0;
-      zherk_("L", "N", &n, &nocc, &one, w.x.data(), &n, &zero, w.rho.data(), &n);
-      w.x.leftCols(nocc) = w.x.leftCols(nocc) * e.head(nocc).cwiseAbs().cwiseSqrt().asDiagonal();
-      const int npos = nocc - nneg;
-      zherk_("L", "N", &n, &nneg, &minusOne, w.x.data(), &n, &zero, w.rhoE.data(), &n);
-      zherk_("L", "N", &n, &npos, &one, w.x.data() + static_cast<size_t>(nneg) * n, &n,
-             nneg > 0 ? &one : &zero, w.rhoE.data(), &n);
-      accumulatePairBlocks(layout, images, grid, kpts[k], weights[k], w.rho, w.p);
-      accumulatePairBlocks(layout, images, grid, kpts[k], weights[k], w.rhoE, w.w);
+      w.x.leftCols(nocc).noalias() = c.leftCols(nocc) * f.head(nocc).cwiseSqrt().asDiagonal();
+      w.y.leftCols(nocc).noalias() = w.x.leftCols(nocc) * e.head(nocc).asDiagonal();
+      accumulateDensityBlocks(layout, images, grid, kpts[k], weights[k], w.x.leftCols(nocc),
+                              w.y.leftCols(nocc), w.p, w.w);
     }
   }
   for (int t = 1; t < nThreads; ++t)

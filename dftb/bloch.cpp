@@ -111,19 +111,31 @@ void assembleBlochReal(const ObjectiveCell& cell, const ParameterSet& params,
                [&](const GroupElement& g) { return std::cos(grid.phase(k, g)); }, hk, sk);
 }
 
-void accumulatePairBlocks(const OrbitalLayout& layout, const ImageList& images,
-                          const HelicalKGrid& grid, const HelicalKPoint& k, double weight,
-                          const ComplexMatrix& m, std::vector<OrbitalBlock>& blocks) {
+void accumulateDensityBlocks(const OrbitalLayout& layout, const ImageList& images,
+                             const HelicalKGrid& grid, const HelicalKPoint& k, double weight,
+                             const Eigen::Ref<const ComplexMatrix>& x,
+                             const Eigen::Ref<const ComplexMatrix>& y,
+                             std::vector<OrbitalBlock>& p, std::vector<OrbitalBlock>& w) {
+  using Block = Eigen::Matrix<std::complex<double>, kMaxOrbitalsPerAtom, kMaxOrbitalsPerAtom>;
   const auto& pairs = images.pairs();
-  // m holds the lower triangle of a Hermitian matrix: m(r, c) = conj(m(c, r)) for r < c.
-  auto element = [&m](int r, int c) { return r >= c ? m(r, c) : std::conj(m(c, r)); };
-  for (size_t p = 0; p < pairs.size(); ++p) {
-    const ImagePair& q = pairs[p];
-    const std::complex<double> phase = weight * std::polar(1.0, grid.phase(k, q.g));
-    const int oi = layout.offset[q.i], oj = layout.offset[q.j];
-    const int ni = layout.count[q.i], nj = layout.count[q.j];
-    for (int b = 0; b < nj; ++b)
-      for (int a = 0; a < ni; ++a) blocks[p](a, b) += (phase * element(oj + b, oi + a)).real();
+  Block rho, rhoE;
+  for (size_t first = 0; first < pairs.size();) {
+    const int i = pairs[first].i, j = pairs[first].j;
+    size_t last = first;
+    while (last < pairs.size() && pairs[last].i == i && pairs[last].j == j) ++last;
+    const int oi = layout.offset[i], oj = layout.offset[j];
+    const int ni = layout.count[i], nj = layout.count[j];
+    rho.topLeftCorner(nj, ni).noalias() = x.middleRows(oj, nj) * x.middleRows(oi, ni).adjoint();
+    rhoE.topLeftCorner(nj, ni).noalias() = y.middleRows(oj, nj) * x.middleRows(oi, ni).adjoint();
+    for (size_t q = first; q < last; ++q) {
+      const std::complex<double> phase = weight * std::polar(1.0, grid.phase(k, pairs[q].g));
+      for (int b = 0; b < nj; ++b)
+        for (int a = 0; a < ni; ++a) {
+          p[q](a, b) += (phase * rho(b, a)).real();
+          w[q](a, b) += (phase * rhoE(b, a)).real();
+        }
+    }
+    first = last;
   }
 }
 

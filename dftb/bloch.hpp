@@ -53,12 +53,17 @@ void assembleBlochReal(const objective::ObjectiveCell& cell, const ParameterSet&
                        const objective::HelicalKGrid& grid, const objective::HelicalKPoint& k,
                        Eigen::MatrixXd& hk, Eigen::MatrixXd& sk);
 
-// Adds weight * Re(exp(i theta_g) m[(j,b),(i,a)]) into blocks[p](a,b) for every pair p, for the
-// density (m = rho_k) or energy-weighted density (m = rho^E_k). Only the lower triangle of the
-// Hermitian m is read.
-void accumulatePairBlocks(const OrbitalLayout& layout, const objective::ImageList& images,
-                          const objective::HelicalKGrid& grid, const objective::HelicalKPoint& k,
-                          double weight, const ComplexMatrix& m, std::vector<OrbitalBlock>& blocks);
+// Folds the density and energy-weighted density of one k-point onto the image pairs:
+//   P^p_ab += weight * Re(exp(i theta_g) rho[(j,b),(i,a)]),  likewise W^p with rho^E,
+// where rho = X X^+ and rho^E = Y X^+ with X = C sqrt(f) and Y = X diag(e) (n x n_occ). Only
+// the blocks of atom pairs that have an image within the cutoff are formed (pairs of one (i, j)
+// are contiguous in the image list), never the full n x n matrices.
+void accumulateDensityBlocks(const OrbitalLayout& layout, const objective::ImageList& images,
+                             const objective::HelicalKGrid& grid,
+                             const objective::HelicalKPoint& k, double weight,
+                             const Eigen::Ref<const ComplexMatrix>& x,
+                             const Eigen::Ref<const ComplexMatrix>& y,
+                             std::vector<OrbitalBlock>& p, std::vector<OrbitalBlock>& w);
 
 // Contracts derivative blocks with P and W: gradient (3 x N_o), dE/dT, dE/dgamma.
 struct BandDerivatives {
