@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/gen_file.hpp"
+#include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/core/text_reader.hpp"
 #include "objective/core/xyz_file.hpp"
@@ -159,10 +160,18 @@ void checkAgreement(const TomlTable& s, const SymmetryKeys& k, const Symmetry& g
         expected);
 }
 
-ObjectiveCell readBuilder(const TomlTable& b) {
+double readBondLength(const TomlTable& b) {
+  double bond = kDefaultBondLengthAngstrom;
+  if (b.has("bond_length")) {
+    bond = b.number("bond_length", "a positive bond length (Å)");
+    if (!(bond > 0.0))
+      b.fail("bond_length", fmt::format("{} Å", bond), "a positive bond length (Å)");
+  }
+  return bond * kAngstromInBohr;
+}
+
+ObjectiveCell readNanotubeBuilder(const TomlTable& b) {
   b.allowOnly({"type", "n", "m", "cell", "bond_length", "use_rotation"});
-  const std::string type = b.string("type", "type = \"nanotube\"");
-  if (type != "nanotube") b.fail("type", "\"" + type + "\"", "\"nanotube\"");
   const long n = b.integer("n", "the chiral index n >= 1");
   if (n < 1 || n > 10000) b.fail("n", std::to_string(n), "the chiral index 1 <= n <= 10000");
   const long m = b.integer("m", "the chiral index m >= 0");
@@ -170,12 +179,7 @@ ObjectiveCell readBuilder(const TomlTable& b) {
   const std::string kind = b.string("cell", "\"helical\" or \"translational\"");
   if (kind != "helical" && kind != "translational")
     b.fail("cell", "\"" + kind + "\"", "\"helical\" or \"translational\"");
-  double bond = kDefaultBondLengthAngstrom;
-  if (b.has("bond_length")) {
-    bond = b.number("bond_length", "a positive bond length (Å)");
-    if (!(bond > 0.0))
-      b.fail("bond_length", fmt::format("{} Å", bond), "a positive bond length (Å)");
-  }
+  const double bond = readBondLength(b);
   bool rotation = false;
   if (b.has("use_rotation")) {
     if (kind != "translational")
@@ -185,8 +189,62 @@ ObjectiveCell readBuilder(const TomlTable& b) {
     rotation = b.boolean("use_rotation", "true or false");
   }
   const int ni = static_cast<int>(n), mi = static_cast<int>(m);
-  return kind == "helical" ? buildNanotubeHelical(ni, mi, bond * kAngstromInBohr)
-                           : buildNanotubeTranslational(ni, mi, bond * kAngstromInBohr, rotation);
+  return kind == "helical" ? buildNanotubeHelical(ni, mi, bond)
+                           : buildNanotubeTranslational(ni, mi, bond, rotation);
+}
+
+// walls = [[n1, m1], [n2, m2], ...]
+ObjectiveCell readMultiWallBuilder(const TomlTable& b) {
+  b.allowOnly({"type", "walls", "bond_length"});
+  const char* expected = "walls = [[n, m], ...] with at least one pair of chiral indices";
+  const toml::value& v = b.at("walls");
+  if (!v.is_array() || v.as_array().empty()) b.fail("walls", "another value", expected);
+  std::vector<std::pair<int, int>> walls;
+  for (const auto& w : v.as_array()) {
+    if (!w.is_array() || w.as_array().size() != 2 || !w.as_array()[0].is_integer() ||
+        !w.as_array()[1].is_integer())
+      b.fail("walls", "an entry that is not a pair of integers", expected);
+    const auto n = w.as_array()[0].as_integer(), m = w.as_array()[1].as_integer();
+    if (n < 1 || n > 10000 || m < 0 || m > 10000)
+      b.fail("walls", fmt::format("({}, {})", n, m), "chiral indices 1 <= n, 0 <= m <= 10000");
+    walls.emplace_back(static_cast<int>(n), static_cast<int>(m));
+  }
+  return buildMultiWallTranslational(walls, readBondLength(b));
+}
+
+ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
+  b.allowOnly({"type", "layers", "direction", "rotation_order", "cells_along_arc", "interlayer",
+               "bond_length"});
+  const long layers = b.integer("layers", "a number of layers >= 1");
+  if (layers < 1 || layers > 1000) b.fail("layers", std::to_string(layers), "1 <= layers <= 1000");
+  const std::string dir = b.string("direction", "\"armchair\" or \"zigzag\" (along the arc)");
+  if (dir != "armchair" && dir != "zigzag")
+    b.fail("direction", "\"" + dir + "\"", "\"armchair\" or \"zigzag\" (along the arc)");
+  const long na = b.integer("rotation_order", "the number of sectors N_a >= 3");
+  if (na < 3 || na > 10000000) b.fail("rotation_order", std::to_string(na), "3 <= N_a <= 1e7");
+  long cells = 1;
+  if (b.has("cells_along_arc")) {
+    cells = b.integer("cells_along_arc", "a number of cells >= 1");
+    if (cells < 1 || cells > 1000) b.fail("cells_along_arc", std::to_string(cells), "1..1000");
+  }
+  double interlayer = 3.35;
+  if (b.has("interlayer")) {
+    interlayer = b.number("interlayer", "a positive interlayer spacing (Å)");
+    if (!(interlayer > 0.0)) b.fail("interlayer", fmt::format("{} Å", interlayer), "a positive spacing (Å)");
+  }
+  return buildGrapheneRingSector(static_cast<int>(layers),
+                                 dir == "armchair" ? Direction::Armchair : Direction::Zigzag,
+                                 static_cast<int>(na), static_cast<int>(cells),
+                                 interlayer * kAngstromInBohr, readBondLength(b));
+}
+
+ObjectiveCell readBuilder(const TomlTable& b) {
+  const std::string type =
+      b.string("type", "type = \"nanotube\", \"multiwall\" or \"graphene_ring\"");
+  if (type == "nanotube") return readNanotubeBuilder(b);
+  if (type == "multiwall") return readMultiWallBuilder(b);
+  if (type == "graphene_ring") return readGrapheneRingBuilder(b);
+  b.fail("type", "\"" + type + "\"", "\"nanotube\", \"multiwall\" or \"graphene_ring\"");
 }
 
 }  // namespace
