@@ -58,6 +58,91 @@ bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
   return maxForce(result.gradient) < s.forceTolerance;
 }
 
+// L-BFGS (Nocedal & Wright, Numerical Optimization, 2nd ed., Alg. 7.4) with a backtracking
+// Armijo line search, the step capped per atom. Returns false when the line search stalls
+// (energy noise near convergence, or a non-convex region); the caller then continues with FIRE.
+bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSettings& s,
+                dftb::Result& result, int& evaluations, bool& converged) {
+  const int memory = 8;
+  const Eigen::Index n = 3 * cell.atomCount();
+  std::vector<Eigen::VectorXd> ss, ys;
+  std::vector<double> rhos;
+  result = calc.evaluate(cell, kFull);
+  ++evaluations;
+  auto flat = [](const Eigen::Matrix3Xd& m) {
+    return Eigen::Map<const Eigen::VectorXd>(m.data(), m.size()).eval();
+  };
+  Eigen::VectorXd g = flat(result.gradient);
+  for (int step = 0; step < s.maxSteps; ++step) {
+    const double fmax = maxForce(result.gradient);
+    if (s.progress) s.progress(evaluations, result.freeEnergy, fmax);
+    if (!std::isfinite(result.freeEnergy) || !g.allFinite())
+      throw NumericalError("relaxation: non-finite energy or forces");
+    if (fmax < s.forceTolerance) {
+      converged = true;
+      return true;
+    }
+    // Two-loop recursion for d = -H g.
+    Eigen::VectorXd q = g;
+    std::vector<double> alpha(ss.size());
+    for (int k = static_cast<int>(ss.size()) - 1; k >= 0; --k) {
+      alpha[k] = rhos[k] * ss[k].dot(q);
+      q -= alpha[k] * ys[k];
+    }
+    const double gamma = ss.empty() ? 1.0 : ss.back().dot(ys.back()) / ys.back().squaredNorm();
+    Eigen::VectorXd r = gamma * q;
+    for (size_t k = 0; k < ss.size(); ++k) r += ss[k] * (alpha[k] - rhos[k] * ys[k].dot(r));
+    Eigen::VectorXd d = -r;
+    if (g.dot(d) >= 0) {  // not a descent direction: restart from steepest descent
+      ss.clear(), ys.clear(), rhos.clear();
+      d = -g;
+    }
+    Eigen::Map<Eigen::Matrix3Xd> dm(d.data(), 3, cell.atomCount());
+    const double largest = dm.colwise().norm().maxCoeff();
+    double step0 = largest > s.maxDisplacement ? s.maxDisplacement / largest : 1.0;
+    const Eigen::Matrix3Xd x0 = cell.positions;
+    const double f0 = result.freeEnergy, slope = g.dot(d);
+    bool accepted = false;
+    for (int trial = 0; trial < 12 && !accepted; ++trial, step0 *= 0.5) {
+      cell.positions = x0 + step0 * dm;
+      result = calc.evaluate(cell, kFull);
+      ++evaluations;
+      accepted = result.freeEnergy <= f0 + 1e-4 * step0 * slope;
+    }
+    if (!accepted) {
+      cell.positions = x0;
+      result = calc.evaluate(cell, kFull);
+      ++evaluations;
+      return false;
+    }
+    const Eigen::VectorXd gNew = flat(result.gradient);
+    const Eigen::Matrix3Xd moved = cell.positions - x0;
+    Eigen::VectorXd sk = Eigen::Map<const Eigen::VectorXd>(moved.data(), n);
+    Eigen::VectorXd yk = gNew - g;
+    if (sk.dot(yk) > 1e-16) {
+      if (static_cast<int>(ss.size()) == memory) {
+        ss.erase(ss.begin()), ys.erase(ys.begin()), rhos.erase(rhos.begin());
+      }
+      rhos.push_back(1.0 / sk.dot(yk));
+      ss.push_back(std::move(sk));
+      ys.push_back(std::move(yk));
+    }
+    g = gNew;
+  }
+  converged = maxForce(result.gradient) < s.forceTolerance;
+  return true;
+}
+
+// The atoms at fixed symmetry: L-BFGS first, FIRE for whatever remains if its line search stalls.
+bool relaxAtomsAtFixedSymmetry(const dftb::Calculator& calc, ObjectiveCell& cell,
+                               const RelaxSettings& s, dftb::Result& result, int& evaluations) {
+  bool converged = false;
+  if (s.algorithm == RelaxAlgorithm::Lbfgs &&
+      relaxLbfgs(calc, cell, s, result, evaluations, converged))
+    return converged;
+  return relaxAtoms(calc, cell, s, result, evaluations);
+}
+
 // Changes T and scales the z coordinates with it (an affine warm start).
 void setTranslation(ObjectiveCell& cell, double t) {
   const double scale = t / cell.symmetry.translation();
@@ -71,7 +156,7 @@ RelaxOutcome relax(const dftb::Calculator& calc, ObjectiveCell cell, const Relax
   RelaxOutcome out;
   auto relaxAt = [&](double t) {
     if (t != cell.symmetry.translation()) setTranslation(cell, t);
-    const bool ok = relaxAtoms(calc, cell, s, out.result, out.evaluations);
+    const bool ok = relaxAtomsAtFixedSymmetry(calc, cell, s, out.result, out.evaluations);
     out.history.push_back({cell.symmetry.translation(), out.result.freeEnergy,
                            maxForce(out.result.gradient), -out.result.dFdTranslation});
     return ok;

@@ -1,6 +1,6 @@
 #pragma once
-// Relaxation of the cell atoms at fixed symmetry (FIRE: Bitzek et al., Phys. Rev. Lett. 97,
-// 170201 (2006)) and, optionally, a one-dimensional search for the screw translation T0 at zero
+// Relaxation of the cell atoms at fixed symmetry (L-BFGS: Nocedal & Wright, Numerical
+// Optimization, Alg. 7.4; FIRE: Bitzek et al., Phys. Rev. Lett. 97, 170201 (2006)) and, optionally, a one-dimensional search for the screw translation T0 at zero
 // axial force dF/dT = 0 (safeguarded secant / regula falsi on dF/dT, each point relaxed).
 // Energies minimised are the Mermin free energy of dftb::Calculator.
 #include <functional>
@@ -11,7 +11,11 @@
 
 namespace mesochain::objective {
 
+enum class RelaxAlgorithm { Lbfgs, Fire };
+
 struct RelaxSettings {
+  // L-BFGS with a backtracking line search (falls back to FIRE when the search stalls), or FIRE.
+  RelaxAlgorithm algorithm = RelaxAlgorithm::Lbfgs;
   double forceTolerance = 1e-4;  // Hartree/Bohr, on the largest atomic force
   int maxSteps = 500;            // FIRE steps per fixed-T relaxation
   bool relaxTranslation = false; // also find T0 with |dF/dT| < axialTolerance
