@@ -12,8 +12,19 @@
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
+#include "dftb/parameters.hpp"
 
 namespace skftest {
+
+// Value and derivative of a radial potential at r.
+struct Vd {
+  double v, d;
+};
+inline Vd at(const mesochain::dftb::RadialPotential& p, double r) {
+  Vd x{};
+  p.evaluate(r, x.v, x.d);
+  return x;
+}
 
 inline std::string pbc(const std::string& name) {
   return std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/" + name;

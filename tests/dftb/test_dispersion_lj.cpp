@@ -6,20 +6,12 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/dispersion_lj.hpp"
+#include "skf_test_util.hpp"
 
 using namespace mesochain;
 using namespace mesochain::dftb;
-
-namespace {
-struct Vd {
-  double v, d;
-};
-Vd at(const RadialPotential& p, double r) {
-  Vd x{};
-  p.evaluate(r, x.v, x.d);
-  return x;
-}
-}  // namespace
+using skftest::at;
+using skftest::Vd;
 
 TEST(LennardJones, CarbonDefaultsInAtomicUnits) {
   const UffLennardJones lj = UffLennardJones::carbonDefaults();

@@ -15,14 +15,6 @@ using namespace skftest;
 
 namespace {
 
-struct Vd {
-  double v, d;
-};
-Vd at(const RadialPotential& p, double r) {
-  Vd x{};
-  p.evaluate(r, x.v, x.d);
-  return x;
-}
 double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 
 struct Case {
