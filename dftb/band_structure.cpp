@@ -43,7 +43,7 @@ struct BlasThreadsOff {
 
 // Buffers of one thread, sized once before the k loop.
 struct ThreadWork {
-  ComplexMatrix sk, x, y;
+  ComplexMatrix hk, sk, x, y;  // hk: H(k) when the eigenvectors are not kept
   Eigen::MatrixXd hr, sr;
   GeneralizedEigensolver solver;
   std::vector<OrbitalBlock> p, w;
@@ -76,18 +76,21 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
     electrons += params.species(cell.species[a]).valenceElectrons;
 
   std::vector<Eigen::VectorXd> levels(nk, Eigen::VectorXd(n));
-  std::vector<ComplexMatrix> vectors(nk, ComplexMatrix(n, n));
+  // Eigenvectors are needed only for the density matrices (gradient or strain derivatives);
+  // an energy-only evaluation asks LAPACK for eigenvalues alone.
+  const bool wantDensity = request.gradient || request.strain;
+  std::vector<ComplexMatrix> vectors(wantDensity ? nk : 0, ComplexMatrix(n, n));
   std::vector<double> weights(nk);
   bool anyReal = false;
   for (int k = 0; k < nk; ++k) {
     weights[k] = kpts[k].weight;
     anyReal = anyReal || kpts[k].realPhases;
   }
-  const bool wantDensity = request.gradient || request.strain;
   const int nThreads = std::max(1, std::min(omp_get_max_threads(), nk));
   std::vector<ThreadWork> work(nThreads);
   for (auto& w : work) {
     w.sk.resize(n, n);
+    if (!wantDensity) w.hk.resize(n, n);
     w.solver.resize(n);
     if (anyReal) {
       w.hr.resize(n, n);
@@ -114,14 +117,15 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
         if (kp.realPhases) {
           assembleBlochReal(cell, params, layout, images, hBlocks, sBlocks, grid, kp, w.hr, w.sr);
           const auto b = Clock::now();
-          w.solver.solveReal(w.hr, w.sr, levels[k], "band structure (real k-point)");
-          vectors[k] = w.hr.cast<std::complex<double>>();
+          w.solver.solveReal(w.hr, w.sr, levels[k], wantDensity, "band structure (real k-point)");
+          if (wantDensity) vectors[k] = w.hr.cast<std::complex<double>>();
           w.tAssembly += seconds(a, b);
           w.tSolve += seconds(b, Clock::now());
         } else {
-          assembleBloch(cell, params, layout, images, hBlocks, sBlocks, grid, kp, vectors[k], w.sk);
+          ComplexMatrix& hk = wantDensity ? vectors[k] : w.hk;
+          assembleBloch(cell, params, layout, images, hBlocks, sBlocks, grid, kp, hk, w.sk);
           const auto b = Clock::now();
-          w.solver.solveComplex(vectors[k], w.sk, levels[k], "band structure");
+          w.solver.solveComplex(hk, w.sk, levels[k], wantDensity, "band structure");
           w.tAssembly += seconds(a, b);
           w.tSolve += seconds(b, Clock::now());
         }

@@ -19,7 +19,7 @@ namespace mesochain::dftb {
 void GeneralizedEigensolver::resize(int n) {
   n_ = n;
   if (n <= 0) return;
-  // Workspace sizes for JOBZ = 'V' as documented for zhegvd / dsygvd.
+  // Workspace sizes for JOBZ = 'V' as documented for zhegvd / dsygvd (enough for 'N' too).
   zwork_.resize(static_cast<size_t>(2 * n + n * n));
   rwork_.resize(static_cast<size_t>(1 + 5 * n + 2 * n * n));
   dwork_.resize(static_cast<size_t>(1 + 6 * n + 2 * n * n));
@@ -40,27 +40,27 @@ void check(int info, int n, const char* context) {
 }  // namespace
 
 void GeneralizedEigensolver::solveComplex(ComplexMatrix& h, ComplexMatrix& s, Eigen::VectorXd& e,
-                                          const char* context) {
+                                          bool vectors, const char* context) {
   const int n = static_cast<int>(h.rows());
   if (n != n_) resize(n);
   e.resize(n);
   const int itype = 1, lwork = static_cast<int>(zwork_.size()),
             lrwork = static_cast<int>(rwork_.size()), liwork = static_cast<int>(iwork_.size());
   int info = 0;
-  zhegvd_(&itype, "V", "L", &n, h.data(), &n, s.data(), &n, e.data(), zwork_.data(), &lwork,
+  zhegvd_(&itype, vectors ? "V" : "N", "L", &n, h.data(), &n, s.data(), &n, e.data(), zwork_.data(), &lwork,
           rwork_.data(), &lrwork, iwork_.data(), &liwork, &info);
   check(info, n, context);
 }
 
 void GeneralizedEigensolver::solveReal(Eigen::MatrixXd& h, Eigen::MatrixXd& s, Eigen::VectorXd& e,
-                                       const char* context) {
+                                       bool vectors, const char* context) {
   const int n = static_cast<int>(h.rows());
   if (n != n_) resize(n);
   e.resize(n);
   const int itype = 1, lwork = static_cast<int>(dwork_.size()),
             liwork = static_cast<int>(iwork_.size());
   int info = 0;
-  dsygvd_(&itype, "V", "L", &n, h.data(), &n, s.data(), &n, e.data(), dwork_.data(), &lwork,
+  dsygvd_(&itype, vectors ? "V" : "N", "L", &n, h.data(), &n, s.data(), &n, e.data(), dwork_.data(), &lwork,
           iwork_.data(), &liwork, &info);
   check(info, n, context);
 }

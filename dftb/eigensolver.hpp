@@ -17,11 +17,14 @@ class GeneralizedEigensolver {
   void resize(int n);
   int size() const { return n_; }
 
-  // Solves in place: on return h holds the eigenvectors (columns, S-orthonormal), s is
-  // overwritten, e the ascending eigenvalues. Throws NumericalError naming `context` when S is
+  // Solves in place: e receives the ascending eigenvalues; with `vectors` h holds the
+  // eigenvectors on return (columns, S-orthonormal), otherwise h is overwritten (LAPACK skips
+  // the back-transformation). s is overwritten. Throws NumericalError naming `context` when S is
   // not positive definite (near-singular overlap) or LAPACK fails.
-  void solveComplex(ComplexMatrix& h, ComplexMatrix& s, Eigen::VectorXd& e, const char* context);
-  void solveReal(Eigen::MatrixXd& h, Eigen::MatrixXd& s, Eigen::VectorXd& e, const char* context);
+  void solveComplex(ComplexMatrix& h, ComplexMatrix& s, Eigen::VectorXd& e, bool vectors,
+                    const char* context);
+  void solveReal(Eigen::MatrixXd& h, Eigen::MatrixXd& s, Eigen::VectorXd& e, bool vectors,
+                 const char* context);
 
  private:
   int n_ = 0;
