@@ -130,19 +130,25 @@ PairLongRange longRangePair(const ReciprocalSetup& s, double rhoI, double rhoJ, 
         if (lEst > kMaxOrder)
           throw NumericalError("helical Ewald: more than " + std::to_string(kMaxOrder) +
                                " angular orders needed (radius too large for the tolerance)");
-        scaledBesselISequence(x, lEst + 1, ie);
+        scaledBesselISequence(x, lEst + 2, ie);
         if (g * ie[lEst] < delta || x == 0) break;
         lEst *= 2;
       }
       const double q4t = 1 / (4 * t);
       for (int m = 0;; ++m) {
         const int l = m * na;
-        if (l > lEst) break;
+        if (l > lEst + 1) break;
         const double b = g * ie[l];
-        if (b < delta && !(coulomb && l == 0)) break;  // Ie_l decreases with l
+        // With derivatives, order l also enters through Ie_{l-1} (eq. (E17)): on the axis B_1 = 0
+        // but its radial derivative is not. Measured in units of 1/alpha.
+        const double mag =
+            withDerivatives && l > 0
+                ? std::max(b, g * ie[l - 1] * t * std::max(rhoI, rhoJ) / s.alpha)
+                : b;
+        if (mag < delta && !(coulomb && l == 0)) break;  // Ie_l decreases with l
         out.maxOrder = std::max(out.maxOrder, l);
         const double lgam = l * gamma;
-        const double qc = b > delta ? 2 * std::sqrt(t * std::log(b / delta)) : 0.0;
+        const double qc = mag > delta ? 2 * std::sqrt(t * std::log(mag / delta)) : 0.0;
         long kLo = static_cast<long>(std::ceil((-T * qc - lgam) / (2 * kPi)));
         long kHi = static_cast<long>(std::floor((T * qc - lgam) / (2 * kPi)));
         if (coulomb && l == 0) kLo = std::min(kLo, 0L), kHi = std::max(kHi, 0L);
