@@ -34,4 +34,11 @@ class BandStructureTerm : public EnergyTerm {
   BandSettings settings_;
 };
 
+struct BandGeometry;
+struct BandSolution;
+// The extras every band term reports (band_energy, entropy_term, fermi_level, homo, lumo,
+// electrons, kpoints, orbitals, image_pairs, angular_sampling_error_estimate).
+void reportBandSolution(const BandGeometry& geometry, const BandSolution& solution, double kT,
+                        TermOutput& out);
+
 }  // namespace mesochain::dftb

@@ -51,14 +51,15 @@ void computeRealSpaceBlocks(const ObjectiveCell& cell, const ParameterSet& param
 namespace {
 template <class Matrix>
 void addOnsite(const ObjectiveCell& cell, const ParameterSet& params, const OrbitalLayout& layout,
-               Matrix& hk, Matrix& sk) {
+               const Eigen::VectorXd& shift, Matrix& hk, Matrix& sk) {
   for (int a = 0; a < cell.atomCount(); ++a) {
     const SpeciesData& sp = params.species(cell.species[a]);
     const int o = layout.offset[a];
-    hk(o, o) += sp.onsiteS;
+    const double v = shift.size() > 0 ? shift[a] : 0.0;
+    hk(o, o) += sp.onsiteS + v;
     sk(o, o) += 1.0;
     for (int m = 1; m < layout.count[a]; ++m) {
-      hk(o + m, o + m) += sp.onsiteP;
+      hk(o + m, o + m) += sp.onsiteP + v;
       sk(o + m, o + m) += 1.0;
     }
   }
@@ -72,10 +73,10 @@ template <class Matrix, class Phase>
 void assembleWith(const ObjectiveCell& cell, const ParameterSet& params,
                   const OrbitalLayout& layout, const ImageList& images,
                   const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
-                  Phase phase, Matrix& hk, Matrix& sk) {
+                  Phase phase, const Eigen::VectorXd& shift, Matrix& hk, Matrix& sk) {
   hk.setZero();
   sk.setZero();
-  addOnsite(cell, params, layout, hk, sk);
+  addOnsite(cell, params, layout, shift, hk, sk);
   const auto& pairs = images.pairs();
   for (size_t p = 0; p < pairs.size(); ++p) {
     const ImagePair& q = pairs[p];
@@ -96,19 +97,21 @@ void assembleBloch(const ObjectiveCell& cell, const ParameterSet& params,
                    const OrbitalLayout& layout, const ImageList& images,
                    const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
                    const HelicalKGrid& grid, const HelicalKPoint& k, ComplexMatrix& hk,
-                   ComplexMatrix& sk) {
+                   ComplexMatrix& sk, const Eigen::VectorXd& onsiteShift) {
   assembleWith(cell, params, layout, images, h, s,
-               [&](const GroupElement& g) { return std::polar(1.0, grid.phase(k, g)); }, hk, sk);
+               [&](const GroupElement& g) { return std::polar(1.0, grid.phase(k, g)); },
+               onsiteShift, hk, sk);
 }
 
 void assembleBlochReal(const ObjectiveCell& cell, const ParameterSet& params,
                        const OrbitalLayout& layout, const ImageList& images,
                        const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
                        const HelicalKGrid& grid, const HelicalKPoint& k, Eigen::MatrixXd& hk,
-                       Eigen::MatrixXd& sk) {
+                       Eigen::MatrixXd& sk, const Eigen::VectorXd& onsiteShift) {
   // Exactly +-1 for a real k-point.
   assembleWith(cell, params, layout, images, h, s,
-               [&](const GroupElement& g) { return std::cos(grid.phase(k, g)); }, hk, sk);
+               [&](const GroupElement& g) { return std::cos(grid.phase(k, g)); }, onsiteShift,
+               hk, sk);
 }
 
 void accumulateDensityBlocks(const OrbitalLayout& layout, const ImageList& images,

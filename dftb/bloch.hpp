@@ -40,18 +40,21 @@ void computeRealSpaceBlocks(const objective::ObjectiveCell& cell, const Paramete
                             std::vector<OrbitalBlock>& s);
 
 // Assembles the lower triangle (and diagonal blocks in full) of H(k), S(k). Pairs that fall in
-// the strict upper triangle are skipped: LAPACK reads the lower triangle only.
+// the strict upper triangle are skipped: LAPACK reads the lower triangle only. onsiteShift:
+// empty, or one energy per cell atom added to the diagonal of its orbitals (SCC shift V_i).
 void assembleBloch(const objective::ObjectiveCell& cell, const ParameterSet& params,
                    const OrbitalLayout& layout, const objective::ImageList& images,
                    const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
                    const objective::HelicalKGrid& grid, const objective::HelicalKPoint& k,
-                   ComplexMatrix& hk, ComplexMatrix& sk);
+                   ComplexMatrix& hk, ComplexMatrix& sk,
+                   const Eigen::VectorXd& onsiteShift = Eigen::VectorXd());
 // The same for a k-point whose phases are all real (+-1).
 void assembleBlochReal(const objective::ObjectiveCell& cell, const ParameterSet& params,
                        const OrbitalLayout& layout, const objective::ImageList& images,
                        const std::vector<OrbitalBlock>& h, const std::vector<OrbitalBlock>& s,
                        const objective::HelicalKGrid& grid, const objective::HelicalKPoint& k,
-                       Eigen::MatrixXd& hk, Eigen::MatrixXd& sk);
+                       Eigen::MatrixXd& hk, Eigen::MatrixXd& sk,
+                       const Eigen::VectorXd& onsiteShift = Eigen::VectorXd());
 
 // Folds the density and energy-weighted density of one k-point onto the image pairs:
 //   P^p_ab += weight * Re(exp(i theta_g) rho[(j,b),(i,a)]),  likewise W^p with rho^E,

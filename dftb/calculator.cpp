@@ -11,7 +11,10 @@ namespace mesochain::dftb {
 
 Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings)
     : params_(std::move(params)), settings_(settings) {
-  terms_.push_back(std::make_unique<BandStructureTerm>(params_, settings_.band));
+  if (settings_.scc.enabled)
+    terms_.push_back(std::make_unique<SccBandStructureTerm>(params_, settings_.band, settings_.scc));
+  else
+    terms_.push_back(std::make_unique<BandStructureTerm>(params_, settings_.band));
   const ParameterSet* p = params_.get();
   terms_.push_back(std::make_unique<PairPotentialTerm>(
       "repulsive", [p](int a, int b) -> const RadialPotential& { return p->repulsive(a, b); },
@@ -52,16 +55,19 @@ Result Calculator::evaluate(const objective::ObjectiveCell& cell,
     r.dFdTranslation += out.dEdTranslation;
     r.dFdTwist += out.dEdTwist;
     for (const auto& [k, v] : out.extras) r.extras[k] = v;
+    for (auto& [k, v] : out.series) r.series[k] = std::move(v);
     if (term->name() == "band") {
       r.bandEnergy = out.extras.at("band_energy");
       r.entropyTerm = out.extras.at("entropy_term");
+      // The band term's energy is band - TS (+ the SCC double-counting terms).
+      r.scc = out.energy - (r.bandEnergy - r.entropyTerm);
     } else if (term->name() == "repulsive") {
       r.repulsive = out.energy;
     } else if (term->name() == "dispersion") {
       r.dispersion = out.energy;
     }
   }
-  r.totalEnergy = r.bandEnergy + r.repulsive + r.dispersion;
+  r.totalEnergy = r.bandEnergy + r.scc + r.repulsive + r.dispersion;
   r.freeEnergy = r.totalEnergy - r.entropyTerm;
   r.extrapolatedEnergy = r.totalEnergy - 0.5 * r.entropyTerm;
   if (settings_.dispersion.enabled && !cell.symmetry.isRing()) {

@@ -10,6 +10,7 @@
 #include "dftb/band_structure.hpp"
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
+#include "dftb/scc_term.hpp"
 
 namespace mesochain::dftb {
 
@@ -23,6 +24,7 @@ struct DispersionSettings {
 struct CalculatorSettings {
   BandSettings band;
   DispersionSettings dispersion;
+  SccSettings scc;  // enabled: the band term is self-consistent (dftb/scc_term.hpp)
 };
 
 struct Result {
@@ -31,13 +33,15 @@ struct Result {
   double entropyTerm = 0.0;      // T S
   double repulsive = 0.0;
   double dispersion = 0.0;
-  double totalEnergy = 0.0;      // band + repulsive + dispersion
+  double scc = 0.0;              // SCC: -sum_i V_i q_i + 1/2 dq gamma dq (double counting)
+  double totalEnergy = 0.0;      // band + scc + repulsive + dispersion
   double freeEnergy = 0.0;       // total - TS (Mermin); forces are its negative gradient
   double extrapolatedEnergy = 0.0;  // total - TS/2, the T -> 0 estimate
   Eigen::Matrix3Xd gradient;     // dF/dx, Hartree/Bohr (empty unless requested)
   double dFdTranslation = 0.0;   // Hartree/Bohr
   double dFdTwist = 0.0;         // Hartree/rad
   std::map<std::string, double> extras;  // fermi_level, homo, lumo, timings, ...
+  std::map<std::string, std::vector<double>> series;  // mulliken_charges, SCC history, ...
   int atoms = 0;
 };
 

@@ -5,6 +5,7 @@
 // Parameters are immutable; per-geometry work happens inside evaluate().
 #include <map>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -24,6 +25,8 @@ struct TermOutput {
   double dEdTwist = 0.0;       // Hartree/rad
   // Named extra scalars a term reports (e.g. "fermi_level"), in atomic units.
   std::map<std::string, double> extras;
+  // Named per-atom or per-iteration lists (e.g. "mulliken_charges"), in atomic units.
+  std::map<std::string, std::vector<double>> series;
 };
 
 class EnergyTerm {

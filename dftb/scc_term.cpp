@@ -1,0 +1,183 @@
+#include "dftb/scc_term.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "dftb/band_solver.hpp"
+#include "dftb/bloch.hpp"
+#include "dftb/charge_mixer.hpp"
+#include "dftb/mulliken.hpp"
+
+namespace mesochain::dftb {
+
+using objective::ObjectiveCell;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+std::vector<double> hubbardPerSpecies(const ParameterSet& params) {
+  std::vector<double> u;
+  for (int s = 0; s < params.speciesCount(); ++s) {
+    const SpeciesData& sp = params.species(s);
+    if (!(sp.hubbardU > 0.0))
+      throw InputError("<scc>", "Hubbard U of " + sp.name, std::to_string(sp.hubbardU),
+                       "a positive Hubbard U in " + sp.name + "-" + sp.name + ".skf for SCC");
+    u.push_back(sp.hubbardU);
+  }
+  return u;
+}
+
+std::string historyTable(const std::vector<double>& energy, const std::vector<double>& residual) {
+  std::string s = "  iteration  free energy (Ha)        max |q_out - q_in| (e)\n";
+  char line[128];
+  for (size_t m = 0; m < energy.size(); ++m) {
+    std::snprintf(line, sizeof line, "  %9zu  %22.14f  %.3e\n", m + 1, energy[m], residual[m]);
+    s += line;
+  }
+  return s;
+}
+}  // namespace
+
+SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> params,
+                                           BandSettings band, SccSettings scc)
+    : params_(std::move(params)), band_(band), scc_(std::move(scc)) {
+  if (!(band_.electronicTemperature > 0.0))
+    throw InputError("<electrons>", "electrons.temperature",
+                     std::to_string(band_.electronicTemperature), "a positive temperature");
+  // Mulliken populations carry rounding errors of a few 1e-15 per electron; a tolerance below
+  // 1e-13 electrons cannot be certified in double precision.
+  if (!(scc_.chargeTolerance >= 1e-13))
+    throw InputError("<scc>", "scc.charge_tolerance", std::to_string(scc_.chargeTolerance),
+                     "at least 1e-13 electrons (tighter cannot be resolved in double precision)");
+  if (!(scc_.energyTolerance >= 1e-13))
+    throw InputError("<scc>", "scc.energy_tolerance_Ha", std::to_string(scc_.energyTolerance),
+                     "at least 1e-13 Hartree (tighter cannot be resolved in double precision)");
+  if (scc_.maxIterations < 1)
+    throw InputError("<scc>", "scc.max_iterations", std::to_string(scc_.maxIterations),
+                     "a positive count");
+  if (!(scc_.ewaldTolerance > 0.0 && scc_.ewaldTolerance < 1.0))
+    throw InputError("<scc>", "scc.ewald_tolerance", std::to_string(scc_.ewaldTolerance),
+                     "a number in (0, 1)");
+  makeChargeMixer(scc_.mixer, scc_.mixing);  // validates the mixer name and mixing
+  coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
+  shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),
+                                                     scc_.ewaldTolerance * 1e-2);
+}
+
+Eigen::MatrixXd SccBandStructureTerm::gammaMatrix(const ObjectiveCell& cell) const {
+  Eigen::MatrixXd g = coulomb_->matrix(cell) - shortRange_->matrix(cell);
+  for (int a = 0; a < cell.atomCount(); ++a) g(a, a) += params_->species(cell.species[a]).hubbardU;
+  return g;
+}
+
+void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequest& request,
+                                    TermOutput& out) const {
+  const ParameterSet& params = *params_;
+  const double kT = band_.electronicTemperature;
+  const auto t0 = Clock::now();
+  const BandGeometry geo(cell, params, band_.helicalKPoints, band_.angular);
+  const Eigen::MatrixXd gamma = gammaMatrix(cell);
+  const int n = cell.atomCount();
+  Eigen::VectorXd q0(n);
+  for (int a = 0; a < n; ++a) q0[a] = params.species(cell.species[a]).valenceElectrons;
+  const auto pairs = geo.images.pairs();
+  const auto t1 = Clock::now();
+
+  auto mixer = makeChargeMixer(scc_.mixer, scc_.mixing);
+  Eigen::VectorXd dqIn = Eigen::VectorXd::Zero(n), dqOut, v;
+  std::vector<OrbitalBlock> h(pairs.size());
+  std::vector<double> energies, residuals;
+  BandSolution sol;
+  double energy = 0, h0Energy = 0, sccEnergy = 0, timeIterations = 0;
+  bool converged = false;
+  std::string reason;
+  double bestResidual = std::numeric_limits<double>::infinity();
+  int sinceBest = 0;
+  for (int it = 0; it < scc_.maxIterations; ++it) {
+    const auto a = Clock::now();
+    v = gamma * dqIn;
+    for (size_t p = 0; p < pairs.size(); ++p)
+      h[p] = geo.h0[p] + (0.5 * (v[pairs[p].i] + v[pairs[p].j])) * geo.s[p];
+    sol = solveBands(cell, params, geo, h, v, kT, true);
+    const Eigen::VectorXd q = mullikenPopulations(geo.layout, geo.images, sol.onsiteDensity,
+                                                  sol.p, geo.s);
+    dqOut = q - q0;
+    h0Energy = sol.filling.bandEnergy - v.dot(q);
+    sccEnergy = 0.5 * dqOut.dot(gamma * dqOut);
+    energy = h0Energy - sol.filling.entropyTerm + sccEnergy;
+    const double residual = (dqOut - dqIn).cwiseAbs().maxCoeff();
+    const double change =
+        energies.empty() ? std::numeric_limits<double>::infinity() : std::abs(energy - energies.back());
+    energies.push_back(energy);
+    residuals.push_back(residual);
+    timeIterations += std::chrono::duration<double>(Clock::now() - a).count();
+    if (!std::isfinite(energy) || !std::isfinite(residual)) {
+      reason = "the energy or the charges became non-finite";
+      break;
+    }
+    if (residual < scc_.chargeTolerance && change < scc_.energyTolerance) {
+      converged = true;
+      break;
+    }
+    // Stagnation: no new smallest residual for 10 iterations means the mixer cannot get below
+    // the noise floor of the charges (or is cycling); stop instead of spending max_iterations.
+    if (residual < bestResidual) {
+      bestResidual = residual;
+      sinceBest = 0;
+    } else if (++sinceBest >= 10) {
+      reason = "stagnated: no decrease of the residual below " + std::to_string(bestResidual) +
+               " e in 10 iterations (a tolerance below the precision of the charges, or "
+               "charge sloshing; try mixer = \"simple\" with a smaller mixing)";
+      break;
+    }
+    if (it + 1 < scc_.maxIterations) dqIn = mixer->next(dqIn, dqOut);
+  }
+  const int iterations = static_cast<int>(energies.size());
+  if (!converged && reason.empty())
+    reason = "not converged in max_iterations = " + std::to_string(scc_.maxIterations);
+  if (!converged && scc_.stopIfUnconverged)
+    throw NumericalError("SCC " + reason + " (charge tolerance " +
+                         std::to_string(scc_.chargeTolerance) + " e, energy tolerance " +
+                         std::to_string(scc_.energyTolerance) + " Ha); history:\n" +
+                         historyTable(energies, residuals));
+
+  out.energy = energy;
+  reportBandSolution(geo, sol, kT, out);
+  out.extras["h0_energy"] = h0Energy;
+  out.extras["scc_energy"] = sccEnergy;
+  out.extras["scc_iterations"] = iterations;
+  out.extras["scc_converged"] = converged ? 1.0 : 0.0;
+  out.extras["scc_residual"] = residuals.back();
+  out.extras["time_setup"] = std::chrono::duration<double>(t1 - t0).count();
+  out.extras["time_scc_iterations"] = timeIterations;
+  out.extras["time_per_scc_iteration"] = timeIterations / iterations;
+  std::vector<double> populations(n), charges(n);
+  for (int a = 0; a < n; ++a) {
+    populations[a] = q0[a] + dqOut[a];
+    charges[a] = -dqOut[a];
+  }
+  out.series["mulliken_populations"] = populations;
+  out.series["mulliken_charges"] = charges;
+  out.series["scc_history_energy"] = energies;
+  out.series["scc_history_residual"] = residuals;
+  if (!request.gradient && !request.strain) return;
+
+  // W' = W - 1/2 (V_i + V_j) P with the output potential (see the header).
+  const Eigen::VectorXd vOut = gamma * dqOut;
+  std::vector<OrbitalBlock> wShifted(pairs.size());
+  for (size_t p = 0; p < pairs.size(); ++p)
+    wShifted[p] = sol.w[p] - (0.5 * (vOut[pairs[p].i] + vOut[pairs[p].j])) * sol.p[p];
+  const BandDerivatives d =
+      contractDerivatives(cell, params, geo.images, sol.p, wShifted, request.strain);
+  const Eigen::MatrixXd weights = dqOut * dqOut.transpose();
+  const LatticeSumDerivatives lr = coulomb_->derivatives(cell, weights);
+  const LatticeSumDerivatives sr = shortRange_->derivatives(cell, weights);
+  if (request.gradient) out.gradient = d.gradient + lr.gradient - sr.gradient;
+  out.dEdTranslation = d.dEdTranslation + lr.dTranslation - sr.dTranslation;
+  out.dEdTwist = d.dEdTwist + lr.dTwist - sr.dTwist;
+}
+
+}  // namespace mesochain::dftb

@@ -1,0 +1,64 @@
+#pragma once
+// Self-consistent-charge DFTB (DFTB2; Elstner et al., Phys. Rev. B 58, 7260 (1998)) on an
+// objective cell: the band-structure term with the charge-dependent shift
+//   H_mu nu(g) = H0_mu nu(g) + 1/2 S_mu nu(g) (V_i + V_j),   V_i = sum_j gamma~_ij dq_j,
+// iterated to self-consistency of the Mulliken populations (dftb/mulliken.hpp), where
+//   gamma~_ij = Phi_ij - S~_ij + delta_ij U_i
+// (1/r lattice sum Phi from a CoulombLatticeSum, short-range part S~ summed over images,
+// dftb/gamma_functional.hpp) and dq_i = q_i - q0_i (electrons relative to the neutral atom).
+//
+// Energy per cell (DFTB+ convention; the double counting of the shift is removed):
+//   F = [sum_k w_k sum_n f e - sum_i V_in,i q_i] - TS + 1/2 sum_ij dq_i gamma~_ij dq_j,
+// the bracket being Tr(rho H0) of the output density. evaluate() reports it as `energy`, with
+// extras band_energy (sum f e with the shifted H), entropy_term, h0_energy, scc_energy,
+// scc_iterations, scc_converged, and series mulliken_populations / mulliken_charges (q0 - q,
+// elementary charges) and the iteration history (scc_history_energy, scc_history_residual).
+//
+// Gradient (at self-consistency): P:dH0 - W:dS + 1/2 (V_i + V_j) P:dS + 1/2 dq (dgamma~) dq,
+// the middle terms through contractDerivatives with W' = W - 1/2 (V_i + V_j) P.
+//
+// A loop that does not converge within max_iterations, or stagnates above the tolerance, throws
+// NumericalError with the history (or, when `stopIfUnconverged` is false, returns the last
+// iterate flagged scc_converged = 0 with the history).
+#include <memory>
+#include <string>
+
+#include "dftb/band_structure.hpp"
+#include "dftb/coulomb_lattice_sum.hpp"
+#include "dftb/energy_term.hpp"
+#include "dftb/gamma_functional.hpp"
+#include "dftb/parameters.hpp"
+
+namespace mesochain::dftb {
+
+struct SccSettings {
+  bool enabled = false;
+  double chargeTolerance = 1e-8;   // max_i |q_out,i - q_in,i|, electrons
+  double energyTolerance = 1e-8;   // |F_m - F_{m-1}|, Hartree per cell
+  int maxIterations = 100;
+  std::string mixer = "broyden";   // or "simple"
+  double mixing = 0.2;
+  double ewaldTolerance = 1e-10;   // long-range 1/r sum and short-range image cutoff
+  bool stopIfUnconverged = true;   // false: return the last iterate, flagged
+};
+
+class SccBandStructureTerm : public EnergyTerm {
+ public:
+  SccBandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings band,
+                       SccSettings scc);
+  std::string name() const override { return "band"; }
+  void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
+                TermOutput& out) const override;
+
+  // gamma~ of the cell (N_o x N_o, Hartree per electron^2).
+  Eigen::MatrixXd gammaMatrix(const objective::ObjectiveCell& cell) const;
+
+ private:
+  std::shared_ptr<const ParameterSet> params_;
+  BandSettings band_;
+  SccSettings scc_;
+  std::unique_ptr<CoulombLatticeSum> coulomb_;
+  std::unique_ptr<ShortRangeGammaSum> shortRange_;
+};
+
+}  // namespace mesochain::dftb
