@@ -1,25 +1,29 @@
-// `mesochain build cnt N M [options]`: writes an objective-cell file of an (n,m) nanotube, as its
-// minimal helical cell (2 atoms + screw + C_gcd(n,m)) or its translational cell.
+// `mesochain build cnt N M | multiwall N,M N,M ... | graphene-ring LAYERS [options]`: writes an
+// objective-cell file (docs/cell-file.md) of an (n,m) nanotube (its minimal helical cell or its
+// translational cell), of concentric walls sharing one translational period, or of a bent
+// AB-stacked graphene stack (one sector of a ring); atoms inline, symmetry, k-points, task.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/cell_file.hpp"
+#include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 
 namespace mesochain::app {
 
 namespace {
-struct BuildOptions {
-  int n = 0, m = 0;
-  std::string cell = "helical";
+// Options every structure shares.
+struct CommonOptions {
   double bond = objective::kDefaultBondLengthAngstrom;
   int kpoints = 0;  // 0: chosen from the cell length
   double kelvin = 300.0;
@@ -28,58 +32,144 @@ struct BuildOptions {
   std::string output;
 };
 
-int build(const BuildOptions& o) {
+struct CntOptions {
+  int n = 0, m = 0;
+  std::string cell = "helical";
+};
+
+struct MultiWallOptions {
+  std::vector<std::string> walls;  // "n,m"
+};
+
+struct RingOptions {
+  int layers = 0;
+  std::string direction;
+  int rotationOrder = 0;
+  int cellsAlongArc = 1;
+  double interlayer = 3.35;  // Å
+};
+
+void addCommonOptions(CLI::App* s, CommonOptions& o, const std::string& defaultName) {
+  s->add_option("--bond", o.bond, "C-C bond length of the flat sheet, Å");
+  s->add_option("--kpoints", o.kpoints, "helical k-points (default: from the cell length)");
+  s->add_option("--temperature", o.kelvin, "electronic temperature, K");
+  s->add_option("--set", o.set, "parameter set folder under params/");
+  s->add_option("--task", o.task, "energy | forces | relax")
+      ->check(CLI::IsMember({"energy", "forces", "relax"}));
+  s->add_option("-o,--output", o.output, "cell file to write (default " + defaultName + ")");
+}
+
+// Completes the cell input around `cell` and writes it; `what` describes the structure.
+int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std::string& defaultPath,
+               const std::string& what) {
   objective::CellInput in;
-  const double bond = o.bond * units::kAngstromInBohr;
-  in.cell = o.cell == "helical" ? objective::buildNanotubeHelical(o.n, o.m, bond)
-                                : objective::buildNanotubeTranslational(o.n, o.m, bond, false);
-  in.source = o.output;
+  in.cell = std::move(cell);
+  const std::string path = o.output.empty() ? defaultPath : o.output;
+  in.source = path;
   // Unless asked otherwise: kappa points that sample a 300 Å length of tube (N T = 300 Å),
   // which converges metallic tubes at 300 K to about 1e-8 Ha/atom (mesochain bench kpoints).
-  in.helicalKPoints =
-      o.kpoints > 0 ? o.kpoints
-                    : std::max(8, static_cast<int>(std::ceil(300.0 * units::kAngstromInBohr /
-                                                             in.cell.symmetry.translation())));
+  const double t = in.cell.symmetry.translation();
+  in.helicalKPoints = o.kpoints > 0 ? o.kpoints
+                      : t > 0 ? std::max(8, static_cast<int>(std::ceil(300.0 * units::kAngstromInBohr / t)))
+                              : 1;
   in.electronicTemperature = o.kelvin * units::kBoltzmannHartreePerKelvin;
   in.parameterSet = o.set;
   in.parameterFiles = objective::parameterSetFiles(o.set, in.cell.speciesNames, "<command line>", "--set");
   in.task.type = o.task;
-  in.task.relaxTranslation = o.task == "relax";
-  const std::string path = o.output.empty() ? fmt::format("cnt{}{}.toml", o.n, o.m) : o.output;
+  in.task.relaxTranslation = o.task == "relax" && !in.cell.symmetry.isRing();
   objective::writeCellFile(path, in);
-  std::cout << fmt::format("wrote {}: ({},{}) {} cell, {} atoms, T = {:.6f} Å, twist = {:.6f}°, "
+  std::cout << fmt::format("wrote {}: {}, {} atoms, T = {:.6f} Å, twist = {:.6f}°, "
                            "rotation order {}, {} kappa points\n",
-                           path, o.n, o.m, o.cell, in.cell.atomCount(),
-                           in.cell.symmetry.translation() * units::kBohrInAngstrom,
+                           path, what, in.cell.atomCount(), t * units::kBohrInAngstrom,
                            in.cell.symmetry.twist() / units::kDegree,
                            in.cell.symmetry.rotationOrder(), in.helicalKPoints);
   return 0;
 }
+
+int buildCnt(const CntOptions& c, const CommonOptions& o) {
+  const double bond = o.bond * units::kAngstromInBohr;
+  return writeBuilt(c.cell == "helical" ? objective::buildNanotubeHelical(c.n, c.m, bond)
+                                        : objective::buildNanotubeTranslational(c.n, c.m, bond, false),
+                    o, fmt::format("cnt{}{}.toml", c.n, c.m), fmt::format("({},{}) {} cell", c.n, c.m, c.cell));
+}
+
+int buildMultiWall(const MultiWallOptions& w, const CommonOptions& o) {
+  std::vector<std::pair<int, int>> walls;
+  std::string name = "mw", what;
+  for (const std::string& s : w.walls) {
+    int n = 0, m = 0;
+    char comma = 0, rest = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &n, &comma, &m, &rest) != 3 || comma != ',')
+      throw InputError("<command line>", "build multiwall, wall '" + s + "'", "'" + s + "'",
+                       "chiral indices written n,m (e.g. 5,5)");
+    walls.emplace_back(n, m);
+    name += fmt::format("{}{}-{}", walls.size() > 1 ? "_" : "", n, m);
+    what += fmt::format("{}({},{})", walls.size() > 1 ? "@" : "", n, m);
+  }
+  return writeBuilt(objective::buildMultiWallTranslational(walls, o.bond * units::kAngstromInBohr), o,
+                    name + ".toml", what + " translational cell");
+}
+
+int buildRing(const RingOptions& r, const CommonOptions& o) {
+  return writeBuilt(objective::buildGrapheneRingSector(
+                        r.layers, r.direction == "armchair" ? objective::Direction::Armchair
+                                                            : objective::Direction::Zigzag,
+                        r.rotationOrder, r.cellsAlongArc, r.interlayer * units::kAngstromInBohr,
+                        o.bond * units::kAngstromInBohr),
+                    o, fmt::format("ring{}L-{}-{}.toml", r.layers, r.direction, r.rotationOrder),
+                    fmt::format("{}-layer graphene ring sector ({} along the arc, 1/{} of the ring)",
+                                r.layers, r.direction, r.rotationOrder));
+}
 }  // namespace
 
 Command makeBuildCommand() {
-  auto o = std::make_shared<BuildOptions>();
-  auto sub = std::make_shared<CLI::App*>(nullptr);
+  auto common = std::make_shared<CommonOptions>();
+  auto cnt = std::make_shared<CntOptions>();
+  auto mw = std::make_shared<MultiWallOptions>();
+  auto ring = std::make_shared<RingOptions>();
+  struct Subs {
+    CLI::App *cnt = nullptr, *mw = nullptr, *ring = nullptr;
+  };
+  auto subs = std::make_shared<Subs>();
   Command c;
-  c.attach = [o, sub](CLI::App& app) {
+  c.attach = [=](CLI::App& app) {
     auto* b = app.add_subcommand("build", "write an objective-cell file of a structure");
     b->require_subcommand(1);
     auto* s = b->add_subcommand("cnt", "an (n,m) carbon nanotube");
-    s->add_option("n", o->n, "chiral index n")->required();
-    s->add_option("m", o->m, "chiral index m")->required();
-    s->add_option("--cell", o->cell, "helical (2 atoms + symmetry) or translational")
+    s->add_option("n", cnt->n, "chiral index n")->required();
+    s->add_option("m", cnt->m, "chiral index m")->required();
+    s->add_option("--cell", cnt->cell, "helical (2 atoms + symmetry) or translational")
         ->check(CLI::IsMember({"helical", "translational"}));
-    s->add_option("--bond", o->bond, "C-C bond length of the roll-up, Å");
-    s->add_option("--kpoints", o->kpoints, "helical k-points (default: from the cell length)");
-    s->add_option("--temperature", o->kelvin, "electronic temperature, K");
-    s->add_option("--set", o->set, "parameter set folder under params/");
-    s->add_option("--task", o->task, "energy | forces | relax")
-        ->check(CLI::IsMember({"energy", "forces", "relax"}));
-    s->add_option("-o,--output", o->output, "cell file to write (default cntNM.toml)");
-    *sub = s;
+    addCommonOptions(s, *common, "cntNM.toml");
+    subs->cnt = s;
+
+    auto* w = b->add_subcommand("multiwall", "concentric nanotube walls sharing one period (translational cell)");
+    w->add_option("walls", mw->walls, "chiral indices of the walls, inner first, as n,m (e.g. 5,5 10,10)")
+        ->required();
+    addCommonOptions(w, *common, "mwN-M_N-M.toml");
+    subs->mw = w;
+
+    auto* g = b->add_subcommand("graphene-ring", "AB-stacked graphene layers bent into a ring (one sector)");
+    g->add_option("layers", ring->layers, "number of graphene layers")->required();
+    g->add_option("--direction", ring->direction, "sheet direction along the arc")
+        ->required()
+        ->check(CLI::IsMember({"armchair", "zigzag"}));
+    g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")->required();
+    g->add_option("--cells-along-arc", ring->cellsAlongArc, "rectangular sheet cells per sector (default 1)");
+    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)");
+    addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
+    subs->ring = g;
   };
-  c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [o] { return build(*o); };
+  c.selected = [subs] {
+    for (CLI::App* s : {subs->cnt, subs->mw, subs->ring})
+      if (s && s->parsed()) return true;
+    return false;
+  };
+  c.run = [=] {
+    if (subs->mw->parsed()) return buildMultiWall(*mw, *common);
+    if (subs->ring->parsed()) return buildRing(*ring, *common);
+    return buildCnt(*cnt, *common);
+  };
   return c;
 }
 

@@ -1,5 +1,6 @@
 // `mesochain dem SCENE.toml`: runs a mesoscopic distinct element scene (docs/scene-file.md).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -59,6 +60,8 @@ Command makeDemCommand() {
         "twisting {:.8g}, bending {:.8g}; outputs in {}\n",
         e.kineticTranslational, e.kineticRotational, e.bonds.stretching, e.bonds.shearing,
         e.bonds.twisting, e.bonds.bending, dir);
+    if (!scene.output.plotPng.empty())
+      std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";
     return 0;
   };
   return c;

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/output.hpp"
+#include "mdem/time_series_plot.hpp"
 
 namespace mesochain::mdem {
 
@@ -32,11 +33,16 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     xyz.open(prepare(o.xyz));
     if (!xyz) throw InputError(scene.source, "key output.xyz", o.xyz, "a writable file");
   }
+  // The plot samples every energies_every steps, coarser when that would exceed ~4000 samples.
+  std::unique_ptr<TimeSeriesPlot> plot;
+  if (!o.plotPng.empty()) plot = std::make_unique<TimeSeriesPlot>(o.probes);
+  const long plotEvery = std::max(o.energiesEvery, scene.run.steps / 4000);
   const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
   long frame = 0;
   auto record = [&](bool force) {
     const long k = sim.stepCount();
     if (csv && (force || k % o.energiesEvery == 0)) csv->write(k, sim.time(), sim.energies(), sim.bodies());
+    if (plot && (force || k % plotEvery == 0)) plot->record(sim.time(), sim.energies(), sim.bodies());
     if (force || k % o.framesEvery == 0) {
       if (xyz) writeXyzFrame(xyz, sim.bodies(), scene.elementTypes, sim.time(), k);
       if (!vtkPrefix.empty())
@@ -66,6 +72,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     record(last);
     if (progress && (k % every == 0 || last)) progress(static_cast<double>(k) / scene.run.steps);
   }
+  if (plot) plot->write(prepare(o.plotPng));
   r.steps = sim.stepCount();
   r.time = sim.time();
   r.finalEnergies = sim.energies();

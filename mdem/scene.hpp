@@ -40,6 +40,7 @@ struct OutputSpec {
   std::string vtkPrefix;              // legacy VTK frames PREFIX_000000.vtk, "" = none
   long framesEvery = 1000;
   std::vector<int> probes;            // elements whose displacement and rotation go to the CSV
+  std::string plotPng;                // PNG of the energies and probes against time, "" = none
 };
 
 struct Scene {

@@ -239,13 +239,14 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   if (!root.has("output")) return;
   const TomlTable out = root.table("output");
   out.allowOnly({"directory", "energies_csv", "energies_every", "xyz", "vtk_prefix",
-                 "frames_every", "probes"});
+                 "frames_every", "probes", "plot_png"});
   s.output.directory = out.string("directory", ".");
   s.output.energiesCsv = out.string("energies_csv", "");
   s.output.energiesEvery = out.integer("energies_every", 100);
   s.output.xyz = out.string("xyz", "");
   s.output.vtkPrefix = out.string("vtk_prefix", "");
   s.output.framesEvery = out.integer("frames_every", 1000);
+  s.output.plotPng = out.string("plot_png", "");
   for (const char* k : {"energies_every", "frames_every"})
     if (out.integer(k, 1) < 1) out.fail(k, std::to_string(out.integer(k)), "at least 1");
   if (out.has("probes"))

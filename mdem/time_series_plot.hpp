@@ -1,0 +1,31 @@
+#pragma once
+// PNG plots of a run's time series ([output] plot_png): the energies (kinetic translational and
+// rotational, each bond energy kind, load potential, total; zJ) and, when probes are given,
+// their displacements (nm) and accumulated rotations (rad), one panel each, against time (ns).
+#include <string>
+#include <vector>
+
+#include "mdem/body.hpp"
+#include "mdem/effect.hpp"
+
+namespace mesochain::mdem {
+
+class TimeSeriesPlot {
+ public:
+  explicit TimeSeriesPlot(std::vector<int> probes) : probes_(std::move(probes)) {}
+
+  void record(double time, const Energies& e, const Bodies& b);
+  std::size_t samples() const { return time_.size(); }
+
+  // Energy series that stay exactly zero are left out and named in the panel title; non-finite
+  // samples (a run that blew up) are skipped and counted in the legend.
+  void write(const std::string& path) const;
+
+ private:
+  std::vector<int> probes_;
+  std::vector<double> time_;
+  std::vector<std::vector<double>> energies_;  // one vector per energy kind
+  std::vector<std::vector<double>> probe_;     // per probe 6 vectors: ux uy uz rx ry rz
+};
+
+}  // namespace mesochain::mdem
