@@ -7,9 +7,10 @@ Command makeRunCommand();
 Command makeDemCommand();
 Command makeBenchCommand();
 Command makeBuildCommand();
+Command makeBeamCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeBeamCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

@@ -1,0 +1,162 @@
+// `mesochain beam TABLES... [CONSTANTS.toml]`: fits scan tables (or takes the four constants),
+// idealises a beam, discretises it into bricks and writes beam.json, an mDEM model file and a
+// cantilever scene (docs/beam.md).
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "beam/beam_run.hpp"
+#include "beam/mdem_export.hpp"
+#include "beam/si_units.hpp"
+#include "common/errors.hpp"
+#include "common/units.hpp"
+
+namespace mesochain::app {
+
+namespace {
+namespace fs = std::filesystem;
+
+struct BeamOptions {
+  std::vector<std::string> inputs;
+  int cellsPerBrick = 0;
+  std::string closure = "four_constants";
+  std::string section = "rectangle";
+  double wallAngstrom = 3.4;
+  std::optional<double> thicknessAngstrom;
+  std::string linearTerm = "auto";
+  double tolerance = 0.02;
+  bool measuredCurvature = false;
+  std::optional<double> c, k, ds, dh, t0;
+  std::optional<int> atoms;
+  std::string outputDir = "beam-out";
+  int bricks = 11;
+};
+
+void writeFile(const fs::path& p, const std::string& text) {
+  std::ofstream out(p);
+  if (!out) throw InputError(p.string(), "cannot write the file");
+  out << text;
+}
+}  // namespace
+
+Command makeBeamCommand() {
+  auto sub = std::make_shared<CLI::App*>(nullptr);
+  auto opt = std::make_shared<BeamOptions>();
+  Command c;
+  c.attach = [sub, opt](CLI::App& app) {
+    CLI::App* s = app.add_subcommand(
+        "beam", "fit scan tables (or take C, K, D_s, D_h) to a beam and bricks; write beam.json and mDEM files");
+    *sub = s;
+    s->add_option("inputs", opt->inputs,
+                  "scan tables (.json, .csv), folders of them, and/or a constants file (.toml)");
+    s->add_option("-n,--cells-per-brick", opt->cellsPerBrick, "cells per brick (L = n T0)");
+    s->add_option("--closure", opt->closure, "four_constants (default) or measured_thickness");
+    s->add_option("--section", opt->section, "rectangle (default), circle or annulus");
+    s->add_option("--wall-thickness-angstrom", opt->wallAngstrom, "annulus wall (default 3.4)");
+    s->add_option("--thickness-angstrom", opt->thicknessAngstrom, "measured thickness h (overrides the scans')");
+    s->add_option("--linear-term", opt->linearTerm, "auto (stretch, twist: on; bend: off), on, off");
+    s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime (default 0.02)");
+    s->add_flag("--measured-curvature", opt->measuredCurvature, "fit bends against the measured curvature");
+    s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)");
+    s->add_option("--K-hartree-per-rad2", opt->k, "twisting K per cell (U = K gamma^2 / 2)");
+    s->add_option("--D-soft-hartree-bohr2", opt->ds, "soft bending D_s per cell (U = D (1/R)^2 / 2)");
+    s->add_option("--D-hard-hartree-bohr2", opt->dh, "hard bending D_h per cell");
+    s->add_option("--T0-bohr", opt->t0, "cell length T0");
+    s->add_option("--atoms-per-cell", opt->atoms, "carbon atoms per cell (mass)");
+    s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml");
+    s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)");
+  };
+  c.selected = [sub] { return *sub && (*sub)->parsed(); };
+  c.run = [opt] {
+    beam::BeamInputs in;
+    std::vector<std::string> skipped;
+    for (const std::string& p : opt->inputs) {
+      if (fs::is_directory(p)) {
+        for (const std::string& f : beam::scanFilesIn(p)) {
+          try {
+            in.curves.push_back(beam::readScanTable(f));
+          } catch (const InputError& e) {
+            skipped.push_back(e.what());  // a folder may hold other JSON (checkpoints, results)
+          }
+        }
+      } else if (fs::path(p).extension() == ".toml") {
+        beam::readConstantsFile(p, in);
+      } else {
+        in.curves.push_back(beam::readScanTable(p));
+      }
+    }
+    for (const std::string& s : skipped) std::cerr << "beam: skipped " << s << "\n";
+    const std::string cl = "<command line>";
+    auto given = [&](std::optional<beam::GivenConstant>& slot, const std::optional<double>& v, const char* flag) {
+      if (!v) return;
+      if (slot) throw InputError(cl, flag, "a value also given in " + slot->source, "one source per constant");
+      slot = beam::GivenConstant{*v, 0.0, cl};
+    };
+    given(in.stretch, opt->c, "--C-hartree");
+    given(in.twist, opt->k, "--K-hartree-per-rad2");
+    given(in.bendSoft, opt->ds, "--D-soft-hartree-bohr2");
+    given(in.bendHard, opt->dh, "--D-hard-hartree-bohr2");
+    if (opt->t0) in.cellLength = *opt->t0;
+    if (opt->atoms) in.atomsPerCell = *opt->atoms;
+    if (opt->cellsPerBrick > 0) in.cellsPerBrick = opt->cellsPerBrick;
+    if (opt->thicknessAngstrom) in.thickness = *opt->thicknessAngstrom * units::kAngstromInBohr;
+    in.closure = opt->closure;
+    in.section = opt->section;
+    in.wall = opt->wallAngstrom * units::kAngstromInBohr;
+    in.linearTerm = opt->linearTerm;
+    in.tolerance = opt->tolerance;
+    in.measuredCurvature = opt->measuredCurvature;
+    if (opt->bricks < 2) throw InputError(cl, "--bricks", std::to_string(opt->bricks), "at least 2");
+
+    beam::BeamRun run = beam::runBeam(in);
+    fs::create_directories(opt->outputDir);
+    const fs::path dir(opt->outputDir);
+    beam::MdemExportOptions ex;
+    ex.elements = opt->bricks;
+    const std::string header = fmt::format(
+        "mDEM model written by `mesochain beam` ({} closure, {} section): Y = {:.6g} GPa, G = {:.6g} GPa,\n"
+        "T0 = {:.6g} Bohr, {} cells per brick. Parameters with units: beam.json.",
+        run.beam.closure, run.beam.shape, run.beam.young * beam::si::kHartreePerBohr3InMPa * 1e-3,
+        run.beam.shear * beam::si::kHartreePerBohr3InMPa * 1e-3, run.beam.cellLength, run.brick.cellsPerBrick);
+    writeFile(dir / ex.modelFile, beam::mdemModelToml(run.brick, ex, header));
+    writeFile(dir / "cantilever.toml", beam::cantileverSceneToml(run.brick, ex));
+    run.report["files"] = {{"model", (dir / ex.modelFile).string()}, {"scene", (dir / "cantilever.toml").string()}};
+    if (!skipped.empty()) run.report["skipped_files"] = skipped;
+    writeFile(dir / "beam.json", run.report.dump(2) + "\n");
+
+    const auto& k = run.report["constants"];
+    for (const char* key : {"C_hartree", "K_hartree_per_rad2", "D_soft_hartree_bohr2", "D_hard_hartree_bohr2"})
+      if (k.contains(key))
+        std::cout << fmt::format("{:<22} {:.8g} +- {:.2g}  ({})\n", key, k[key]["value"].get<double>(),
+                                 k[key]["uncertainty"].get<double>(), k[key]["source"].get<std::string>());
+    const auto& b = run.report["beam"];
+    std::cout << fmt::format("beam ({}, {} closure): Y = {:.6g} GPa, G = {:.6g} GPa", run.beam.shape,
+                             run.beam.closure, b["young_modulus_GPa"].get<double>(), b["shear_modulus_GPa"].get<double>());
+    if (run.beam.shape == "rectangle")
+      std::cout << fmt::format(", h = {:.6g} nm, w = {:.6g} nm", b["thickness_nm"].get<double>(), b["width_nm"].get<double>());
+    else
+      std::cout << fmt::format(", r = {:.6g} nm", b["radius_nm"].get<double>());
+    std::cout << "\n";
+    for (const beam::Beam& a : run.alternatives)
+      std::cout << fmt::format("alternative ({} closure): h = {:.6g} nm, relative residual of D_s {:+.3g}\n", a.closure,
+                               a.thickness * beam::si::kBohrInNm, a.residuals.bendSoft);
+    const auto& br = run.report["brick"];
+    std::cout << fmt::format("brick: L = {:.6g} nm, mass = {:.6g} ag, k_n = {:.6g} MPa/nm, k_s = {:.6g} MPa/nm\n",
+                             br["length_nm"].get<double>(), br["mass_ag"].get<double>(),
+                             br["k_n_MPa_per_nm"].get<double>(), br["k_s_MPa_per_nm"].get<double>());
+    std::cout << "wrote " << (dir / "beam.json").string() << ", " << (dir / ex.modelFile).string() << ", "
+              << (dir / "cantilever.toml").string() << "\n";
+    return 0;
+  };
+  return c;
+}
+
+}  // namespace mesochain::app

@@ -1,0 +1,58 @@
+#pragma once
+// The `mesochain beam` workflow as a library call: curves and/or given constants -> fitted
+// constants -> beam (chosen closure, alternatives with residuals) -> brick -> JSON report and
+// mDEM files. Every number in the report carries its unit in its key (docs/beam.md).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "beam/beam_model.hpp"
+#include "beam/brick.hpp"
+#include "beam/curve_fit.hpp"
+#include "beam/scan_table.hpp"
+
+namespace mesochain::beam {
+
+// One constant given directly, with its standard uncertainty (0 when unknown).
+struct GivenConstant {
+  double value = 0.0;
+  double uncertainty = 0.0;
+  std::string source;
+};
+
+struct BeamInputs {
+  std::vector<ScanCurve> curves;
+  // Constants given directly (atomic units), keyed "C", "K", "D_s", "D_h".
+  std::optional<GivenConstant> stretch, twist, bendSoft, bendHard;
+  std::optional<double> cellLength;  // T0, Bohr
+  std::optional<int> atomsPerCell;
+  std::optional<double> cellMass;    // dalton; default atoms_per_cell * 12.011
+  std::optional<double> thickness;   // measured h, Bohr (overrides the scans')
+  int cellsPerBrick = 0;             // required (> 0)
+  std::string closure = "four_constants";  // or "measured_thickness" (rectangle)
+  std::string section = "rectangle";       // or "circle", "annulus"
+  double wall = 3.4 * 1.8897261246257702;  // annulus wall, Bohr (3.4 Å)
+  std::string linearTerm = "auto";   // auto (twist and stretch yes, bend no), "on", "off"
+  bool measuredCurvature = false;    // bend: fit against the measured curvature
+  double tolerance = 0.02;           // FitOptions::relativeTolerance
+  std::string source = "<command line>";
+};
+
+struct BeamRun {
+  BeamConstants constants;
+  BeamConstants uncertainties;  // standard uncertainties (0 when unknown)
+  Beam beam;                    // the chosen closure
+  std::vector<Beam> alternatives;
+  Brick brick;
+  nlohmann::json report;
+};
+
+// Throws InputError for missing, duplicated or inconsistent inputs and refused curves.
+BeamRun runBeam(const BeamInputs& inputs);
+
+// Reads the constants file (TOML, format = 1; keys in docs/beam.md) into `inputs`.
+void readConstantsFile(const std::string& path, BeamInputs& inputs);
+
+}  // namespace mesochain::beam
