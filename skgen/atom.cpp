@@ -227,16 +227,17 @@ AtomSolution solveAtom(const AtomSettings& s) {
       s.name, s.maxIterations, residual, s.tolerance, s.mixing));
 }
 
-void requireBound(const AtomSolution& atom, int n, int l, const std::string& source,
-                  const std::string& key) {
+void requireBound(const AtomSolution& atom, const Confinement& confinement, int n, int l,
+                  const std::string& source, const std::string& key) {
   const ShellSolution& sh = atom.shell(n, l);
   const double e = std::max(sh.energy[0], sh.energy[1]);
-  if (!(e < 0.0)) {
+  const double limit = confinement.type == Confinement::Type::None ? 0.0 : confinement(confinement.r0);
+  if (!(e < limit)) {
     throw InputError(source, key,
-                     fmt::format("a confinement under which the n={} l={} level is at {:+.4f} Ha "
-                                 "(not bound)",
-                                 n, l, e),
-                     "a confinement radius large enough for a bound state (level below zero)");
+                     fmt::format("confinement {} under which the n={} l={} level is at {:+.4f} Ha, "
+                                 "above the confining potential at r0 ({:.4f} Ha)",
+                                 confinement.describe(), n, l, e, limit),
+                     "a confinement radius large enough for a bound state");
   }
 }
 

@@ -74,9 +74,12 @@ struct AtomSolution {
 // that pushes an occupied level to or above zero is reported by `requireBound`).
 AtomSolution solveAtom(const AtomSettings& s);
 
-// Throws InputError(source, key, ...) when the state (n, l) of `atom` is not bound (ε >= 0): the
-// confinement radius is too small for a bound state.
-void requireBound(const AtomSolution& atom, int n, int l, const std::string& source,
-                  const std::string& key);
+// Throws InputError(source, key, ...) when the state (n, l) of `atom`, solved under
+// `confinement`, is not bound by the atom: its level lies above the confining potential at r0
+// (1 Ha for (r/r0)^n), i.e. the confinement, not the nucleus, holds the electron — the
+// confinement radius is too small for a bound state. (Confined valence levels may be above
+// zero: carbon 2s under (r/2.7)^2 is at +0.06 Ha.)
+void requireBound(const AtomSolution& atom, const Confinement& confinement, int n, int l,
+                  const std::string& source, const std::string& key);
 
 }  // namespace mesochain::skgen

@@ -157,7 +157,16 @@ RadialState solveRadial(const LogGrid& grid, const std::vector<double>& v, doubl
   std::vector<double> w(grid.size());
   for (int i = 0; i < grid.size(); ++i) w[i] = grid.r[i] * grid.r[i] * phi[i] * phi[i];
   const double norm = std::sqrt(grid.integrateDx(w));
-  const double sign = phi[0] >= 0.0 ? 1.0 : -1.0;
+  // sign convention of the Slater-Koster tables: the outermost lobe (the tail) is positive
+  double peak = 0.0;
+  for (double p : phi) peak = std::max(peak, std::abs(p) * 1.0);
+  double sign = 1.0;
+  for (int i = grid.size() - 1; i >= 0; --i) {
+    if (std::abs(phi[i]) * grid.r[i] > 1e-3 * peak * grid.r[i] && std::abs(phi[i]) > 1e-3 * peak) {
+      sign = phi[i] > 0.0 ? 1.0 : -1.0;
+      break;
+    }
+  }
   st.u.resize(grid.size());
   for (int i = 0; i < grid.size(); ++i) st.u[i] = sign * std::sqrt(grid.r[i]) * phi[i] / norm;
   return st;
