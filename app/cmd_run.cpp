@@ -85,6 +85,8 @@ dftb::Calculator makeCalculator(const objective::CellInput& in) {
     s.dispersion.epsilon = in.dispersion.epsilon;
     s.dispersion.r0 = in.dispersion.r0;
     s.dispersion.cutoff = in.dispersion.cutoff;
+    s.dispersion.ewald = in.dispersion.summation == "ewald";
+    s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
   }
   return dftb::Calculator(params, s);
 }

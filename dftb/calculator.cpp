@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "dftb/dispersion_ewald.hpp"
 #include "dftb/dispersion_lj.hpp"
 #include "dftb/pair_potential_term.hpp"
 
@@ -23,8 +24,12 @@ Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSet
     const auto& d = settings_.dispersion;
     lj_ = std::make_shared<UffLennardJones>(d.epsilon, d.r0, d.cutoff);
     const RadialPotential* lj = lj_.get();
-    terms_.push_back(std::make_unique<PairPotentialTerm>(
-        "dispersion", [lj](int, int) -> const RadialPotential& { return *lj; }, d.cutoff));
+    if (d.ewald)
+      terms_.push_back(std::make_unique<EwaldDispersionTerm>(
+          UffLennardJones(d.epsilon, d.r0, d.cutoff), d.ewaldTolerance));
+    else
+      terms_.push_back(std::make_unique<PairPotentialTerm>(
+          "dispersion", [lj](int, int) -> const RadialPotential& { return *lj; }, d.cutoff));
   }
 }
 
@@ -70,7 +75,7 @@ Result Calculator::evaluate(const objective::ObjectiveCell& cell,
   r.totalEnergy = r.bandEnergy + r.scc + r.repulsive + r.dispersion;
   r.freeEnergy = r.totalEnergy - r.entropyTerm;
   r.extrapolatedEnergy = r.totalEnergy - 0.5 * r.entropyTerm;
-  if (settings_.dispersion.enabled && !cell.symmetry.isRing()) {
+  if (settings_.dispersion.enabled && !settings_.dispersion.ewald && !cell.symmetry.isRing()) {
     // Truncation estimate of the r^-6 tail beyond the cutoff for a line of atoms with density
     // lambda = N_o N_a / T: E_tail = -(2/5) N_o lambda eps r0^6 / r_c^5 per cell.
     const auto& d = settings_.dispersion;

@@ -19,6 +19,10 @@ struct DispersionSettings {
   double epsilon = 0.0;  // Hartree
   double r0 = 0.0;       // Bohr, position of the pair minimum
   double cutoff = 0.0;   // Bohr
+  // r^-6 tail: false = cut off at `cutoff`; true = helical Ewald sum to `ewaldTolerance`
+  // (dftb/dispersion_ewald.hpp).
+  bool ewald = false;
+  double ewaldTolerance = 1e-8;
 };
 
 struct CalculatorSettings {

@@ -88,7 +88,8 @@ Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCel
   LatticeSumPlan& p = r.plan;
   p.shortestDistance = shortestDistance(cell);
   const double dmin = std::isfinite(p.shortestDistance) ? p.shortestDistance : 1.0;
-  p.elementTolerance = tol * fullKernel(kernel, dmin);
+  // Per element tol K(d_min) / N_o: the energy sums N_o^2 elements but grows like N_o K(d_min).
+  p.elementTolerance = tol * fullKernel(kernel, dmin) / std::max(1, cell.atomCount());
   const Symmetry& sym = cell.symmetry;
   if (sym.isRing()) return r;
   const double T = sym.translation();

@@ -22,8 +22,8 @@ namespace mesochain::ewald {
 enum class Kernel { Coulomb /* 1/r */, InverseSixth /* 1/r^6 */ };
 
 struct LatticeSumSettings {
-  // Requested accuracy, relative to K(d_min) (d_min: the shortest distance between distinct
-  // sites), of every matrix element. Sets the splitting parameter (unless given) and every
+  // Requested relative accuracy: every matrix element to tol K(d_min) / N_o (d_min: the shortest
+  // distance between distinct sites), so that energies 1/2 w^T Phi w are good to ~tol. Sets the splitting parameter (unless given) and every
   // truncation. Must lie in [1e-13, 1e-2]; tighter cannot be met in double precision.
   double tolerance = 1e-10;
   std::optional<double> splitting;  // Ewald splitting parameter alpha (1/Bohr); auto if empty

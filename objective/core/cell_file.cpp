@@ -137,11 +137,11 @@ void readParameters(const TomlTable& root, CellInput& in) {
 void readDispersion(const TomlTable& root, CellInput& in) {
   const auto t = root.table("dispersion");
   if (!t) return;  // documented default: no dispersion
-  t->allowOnly({"model", "epsilon", "r0", "cutoff"});
+  t->allowOnly({"model", "epsilon", "r0", "cutoff", "summation", "ewald_tolerance"});
   DispersionInput& d = in.dispersion;
   d.model = t->string("model", "\"none\" or \"lj\"");
   if (d.model == "none") {
-    for (const char* k : {"epsilon", "r0", "cutoff"})
+    for (const char* k : {"epsilon", "r0", "cutoff", "summation", "ewald_tolerance"})
       if (t->has(k)) t->fail(k, "a value with model = \"none\"", "no parameters for \"none\"");
     return;
   }
@@ -162,6 +162,21 @@ void readDispersion(const TomlTable& root, CellInput& in) {
             fmt::format("cutoff {:.4g} Å <= r0 {:.4g} Å", d.cutoff * units::kBohrInAngstrom,
                         d.r0 * units::kBohrInAngstrom),
             "a cutoff well beyond r0 (default 30 Å)");
+  if (t->has("summation")) {
+    d.summation = t->string("summation", "\"cutoff\" or \"ewald\"");
+    if (d.summation != "cutoff" && d.summation != "ewald")
+      t->fail("summation", "\"" + d.summation + "\"", "\"cutoff\" or \"ewald\"");
+  }
+  if (t->has("ewald_tolerance")) {
+    if (d.summation != "ewald")
+      t->fail("ewald_tolerance", "a tolerance with summation = \"cutoff\"",
+              "ewald_tolerance only with summation = \"ewald\"");
+    const double x = t->number("ewald_tolerance", "a relative tolerance in [1e-13, 1e-2]");
+    if (!(x >= 1e-13 && x <= 1e-2))
+      t->fail("ewald_tolerance", fmt::format("{}", x),
+              "a relative tolerance in [1e-13, 1e-2] (tighter cannot be met in double precision)");
+    d.ewaldTolerance = x;
+  }
 }
 
 void readTask(const TomlTable& root, CellInput& in) {

@@ -33,6 +33,8 @@ struct DispersionInput {
   double epsilon = 0;          // Hartree
   double r0 = 0;               // Bohr
   double cutoff = 0;           // Bohr
+  std::string summation = "cutoff";  // r^-6 tail: "cutoff" | "ewald"
+  double ewaldTolerance = 1e-8;      // relative, with summation = "ewald"
 };
 
 struct TaskInput {

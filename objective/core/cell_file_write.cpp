@@ -98,6 +98,8 @@ void writeCellFile(const std::string& path, const CellInput& in) {
                        real(d.epsilon * units::kHartreeInKcalPerMol),
                        real(d.r0 * units::kBohrInAngstrom),
                        real(d.cutoff * units::kBohrInAngstrom));
+  if (d.model == "lj" && d.summation == "ewald")
+    out << fmt::format("summation = \"ewald\"\newald_tolerance = {}\n", real(d.ewaldTolerance));
   const TaskInput& t = in.task;
   out << "\n[task]\ntype = " << quoted(t.type) << "\n";
   if (t.type == "relax")

@@ -1,0 +1,52 @@
+#include "dftb/dispersion_ewald.hpp"
+
+#include <cmath>
+
+namespace mesochain::dftb {
+
+LjShortRange::LjShortRange(const UffLennardJones& lj)
+    : lj_(lj), c6_(2.0 * lj.epsilon() * std::pow(lj.r0(), 6)) {}
+
+void LjShortRange::evaluate(double r, double& value, double& derivative) const {
+  lj_.evaluate(r, value, derivative);
+  if (r >= lj_.cutoff()) return;
+  const double r6 = std::pow(r, 6);
+  value += c6_ / r6;
+  derivative -= 6.0 * c6_ / (r6 * r);
+}
+
+namespace {
+ewald::LatticeSumSettings settingsFor(double tolerance) {
+  ewald::LatticeSumSettings s;
+  s.tolerance = tolerance;
+  return s;
+}
+}  // namespace
+
+EwaldDispersionTerm::EwaldDispersionTerm(const UffLennardJones& lj, double tolerance)
+    : shortRange_(std::make_shared<LjShortRange>(lj)),
+      shortTerm_("dispersion_short",
+                 [p = shortRange_.get()](int, int) -> const RadialPotential& { return *p; },
+                 lj.cutoff()),
+      sum_(ewald::Kernel::InverseSixth, settingsFor(tolerance)) {}
+
+void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
+                                   const EvaluationRequest& request, TermOutput& out) const {
+  shortTerm_.evaluate(cell, request, out);
+  const int n = cell.atomCount();
+  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortRange_->c6());
+  if (request.gradient || request.strain) {
+    const auto d = sum_.derivatives(cell, w);
+    out.energy += d.energy;
+    if (request.gradient) out.gradient += d.gradient;
+    if (request.strain && !cell.symmetry.isRing()) {
+      out.dEdTranslation += d.dTranslation;
+      out.dEdTwist += d.dTwist;
+    }
+  } else {
+    out.energy += 0.5 * w.cwiseProduct(sum_.matrix(cell)).sum();
+  }
+  out.extras["dispersion_ewald_splitting"] = sum_.plan(cell).splitting;
+}
+
+}  // namespace mesochain::dftb
