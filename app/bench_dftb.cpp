@@ -2,8 +2,10 @@
 // `mesochain bench dftb`: time per energy+forces evaluation and the share of it spent in the
 // LAPACK eigensolver, for (i) a (10,10) tube as a 2-atom helical cell with 800 kappa points and
 // (ii) the 120-atom translational cell of a (30,30) tube with 20 kappa points.
-// `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob).
+// `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob),
+// as a table, optionally CSV and a PNG (error vs kappa points and error vs time, log-log).
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -15,6 +17,9 @@
 #include <omp.h>
 
 #include "app/commands.hpp"
+#include "common/plot/canvas.hpp"
+#include "common/plot/figure.hpp"
+#include "common/plot/png_io.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/nanotube_builder.hpp"
@@ -84,7 +89,48 @@ int benchDftb(const std::string& table, int repeats) {
   return 0;
 }
 
-int benchKpoints(const std::string& table, const std::string& csv) {
+// One convergence curve of the k-point benchmark.
+struct KpointCurve {
+  std::string name;
+  std::vector<double> kappa, seconds, error;
+};
+
+// Two log-log panels side by side: |error| against kappa points and against time. An error of
+// exactly zero (converged to the last bit) cannot sit on a log axis: it is left out and the
+// legend says so.
+void plotKpoints(const std::vector<KpointCurve>& curves, const std::string& path) {
+  plot::Figure byCount("Free energy error per atom against kappa points");
+  byCount.x.label = "helical kappa points";
+  byCount.y.label = "|F - F(4096)| per atom (Ha)";
+  byCount.x.scale = byCount.y.scale = plot::Scale::Log10;
+  plot::Figure byTime("... and against time per evaluation");
+  byTime.x.label = "seconds per energy evaluation (2-atom cell)";
+  byTime.x.scale = plot::Scale::Log10;
+  byTime.y = byCount.y;
+  const plot::Marker markers[] = {plot::Marker::Circle, plot::Marker::Square, plot::Marker::Triangle,
+                                  plot::Marker::Diamond};
+  int i = 0;
+  for (const KpointCurve& c : curves) {
+    KpointCurve kept{c.name, {}, {}, {}};
+    for (std::size_t k = 0; k < c.error.size(); ++k)
+      if (c.error[k] > 0) {
+        kept.kappa.push_back(c.kappa[k]);
+        kept.seconds.push_back(c.seconds[k]);
+        kept.error.push_back(c.error[k]);
+      }
+    const std::size_t zeros = c.error.size() - kept.error.size();
+    const std::string name = zeros ? fmt::format("{} ({} exact zeros not shown)", c.name, zeros) : c.name;
+    plot::SeriesStyle style;
+    style.marker = markers[i++ % 4];
+    style.dashed = c.name.find("30 K") != std::string::npos;
+    byCount.add(name, kept.kappa, kept.error, style);
+    byTime.add(name, kept.seconds, kept.error, style);
+  }
+  plot::writePng(path, plot::besideEachOther(byCount.render(900, 600, path), byTime.render(900, 600, path)));
+  std::cout << "wrote " << path << "\n";
+}
+
+int benchKpoints(const std::string& table, const std::string& csv, std::string png) {
   // Error of the free energy per atom against the number of kappa points, and its cost, for a
   // metallic (10,10) and a semiconducting (10,0) tube; the reference is a 4x denser grid.
   const double bond = 1.42 * units::kAngstromInBohr;
@@ -92,23 +138,31 @@ int benchKpoints(const std::string& table, const std::string& csv) {
   if (!csv.empty()) {
     out.open(csv);
     out << "tube,kelvin,kappa_points,seconds,free_energy_per_atom_hartree,abs_error_hartree\n";
+    if (png.empty()) png = std::filesystem::path(csv).replace_extension(".png").string();
   }
+  std::vector<KpointCurve> curves;
   std::cout << fmt::format("{:<8} {:>7} {:>8} {:>12} {:>22} {:>12}\n", "tube", "T (K)", "kappa",
                            "seconds", "F per atom (Ha)", "|error| (Ha)");
   for (auto [n, m] : {std::pair{10, 10}, std::pair{10, 0}})
     for (double kelvin : {300.0, 30.0}) {
       const auto cell = objective::buildNanotubeHelical(n, m, bond);
       const double ref = calculator(table, 4096, kelvin).evaluate(cell, {}).freeEnergy / 2;
+      const std::string tube = fmt::format("({},{})", n, m);
+      KpointCurve& curve = curves.emplace_back();
+      curve.name = fmt::format("{} {}, {:.0f} K", tube, n == m ? "metallic" : "semiconducting", kelvin);
       for (int nk : {8, 16, 32, 64, 128, 256, 512, 1024}) {
         const auto a = Clock::now();
         const double f = calculator(table, nk, kelvin).evaluate(cell, {}).freeEnergy / 2;
         const double s = std::chrono::duration<double>(Clock::now() - a).count();
-        const std::string tube = fmt::format("({},{})", n, m);
         std::cout << fmt::format("{:<8} {:>7.0f} {:>8} {:>12.5f} {:>22.12f} {:>12.3e}\n", tube,
                                  kelvin, nk, s, f, std::abs(f - ref));
         if (out) out << fmt::format("{},{},{},{},{:.15g},{:.6e}\n", tube, kelvin, nk, s, f, std::abs(f - ref));
+        curve.kappa.push_back(nk);
+        curve.seconds.push_back(s);
+        curve.error.push_back(std::abs(f - ref));
       }
     }
+  if (!png.empty()) plotKpoints(curves, png);
   return 0;
 }
 }  // namespace
@@ -134,7 +188,7 @@ Command makeBenchDftbCommand() {
 
 Command makeBenchKpointsCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv;
+    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv, png;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);
@@ -143,10 +197,13 @@ Command makeBenchKpointsCommand() {
     auto* s = bench.add_subcommand("kpoints", "error against time of the helical k-point count");
     s->add_option("--table", o->table, "C-C Slater-Koster table");
     s->add_option("--csv", o->csv, "write the curve as CSV");
+    s->add_option("--png", o->png,
+                  "plot error vs kappa points and vs time (log-log) here (default with --csv: "
+                  "the CSV path with .png)");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [o] { return benchKpoints(o->table, o->csv); };
+  c.run = [o] { return benchKpoints(o->table, o->csv, o->png); };
   return c;
 }
 

@@ -1,5 +1,5 @@
-// `mesochain run CELL.toml [--json OUT] [--structure PREFIX] [--unroll N]`: energy, forces or
-// relaxation of an objective cell.
+// `mesochain run CELL.toml [--json OUT] [--structure PREFIX] [--unroll N] [--plot PNG]`: energy,
+// forces or relaxation of an objective cell.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +13,9 @@
 #include "app/commands.hpp"
 #include "app/run_report.hpp"
 #include "common/errors.hpp"
+#include "common/plot/canvas.hpp"
+#include "common/plot/figure.hpp"
+#include "common/plot/png_io.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/cell_file.hpp"
@@ -28,7 +31,47 @@ struct RunOptions {
   std::string json;
   std::string structure;
   long unroll = 0;
+  std::string plot;
 };
+
+// One accepted relaxation step as reported by the progress callback.
+struct RelaxTrace {
+  std::vector<double> evaluation, freeEnergy, maxForce;
+};
+
+// Two panels, log y: the largest atomic force with the tolerance, and |F_k - F_(k-1)| between
+// consecutive accepted steps (a step that left F unchanged to the last bit is not drawn; the
+// legend counts it).
+void writeRelaxPlot(const std::string& path, const RelaxTrace& t, double tolerance) {
+  plot::Figure forces("Relaxation: largest atomic force");
+  forces.x.label = "energy evaluations";
+  forces.y.label = "max |force| (Ha/Bohr)";
+  forces.y.scale = plot::Scale::Log10;
+  plot::SeriesStyle dots;
+  dots.marker = plot::Marker::Circle;
+  dots.markerSize = 6;
+  forces.add("max |force|", t.evaluation, t.maxForce, dots);
+  plot::SeriesStyle dashed;
+  dashed.dashed = true;
+  dashed.color = plot::Color{110, 110, 110};
+  if (!t.evaluation.empty())
+    forces.add("tolerance", {t.evaluation.front(), t.evaluation.back()}, {tolerance, tolerance}, dashed);
+  plot::Figure change("Relaxation: change of the free energy per step");
+  change.x.label = "energy evaluations";
+  change.y.label = "|F(k) - F(k-1)| (Ha)";
+  change.y.scale = plot::Scale::Log10;
+  std::vector<double> x, dF;
+  for (std::size_t k = 1; k < t.freeEnergy.size(); ++k)
+    if (const double d = std::abs(t.freeEnergy[k] - t.freeEnergy[k - 1]); d > 0) {
+      x.push_back(t.evaluation[k]);
+      dF.push_back(d);
+    }
+  const std::size_t zeros = t.freeEnergy.empty() ? 0 : t.freeEnergy.size() - 1 - dF.size();
+  dots.color = plot::paletteColor(1);
+  change.add(zeros ? fmt::format("|dF| ({} unchanged steps not shown)", zeros) : "|dF|", x, dF, dots);
+  plot::writePng(path, plot::aboveEachOther(forces.render(900, 450, path), change.render(900, 450, path)));
+  std::cerr << "wrote " << path << "\n";
+}
 
 dftb::Calculator makeCalculator(const objective::CellInput& in) {
   auto params = std::make_shared<const dftb::ParameterSet>(dftb::ParameterSet::load(
@@ -74,6 +117,9 @@ void writeStructures(const std::string& prefix, const objective::ObjectiveCell& 
 
 int runCell(const RunOptions& o) {
   const objective::CellInput in = objective::readCellFile(o.cellFile);
+  if (!o.plot.empty() && in.task.type != "relax")
+    throw InputError("<command line>", "option --plot", "task " + in.task.type + " in " + o.cellFile,
+                     "a cell file with task relax (the plot shows the relaxation history)");
   const dftb::Calculator calc = makeCalculator(in);
   const bool tty = isatty(STDERR_FILENO);
   std::unique_ptr<objective::RelaxOutcome> relax;
@@ -85,7 +131,11 @@ int runCell(const RunOptions& o) {
     rs.axialTolerance = in.task.forceTolerance;
     rs.maxSteps = in.task.maxSteps;
     rs.relaxTranslation = in.task.relaxTranslation;
-    rs.progress = [tty](int step, double f, double fmax) {
+    RelaxTrace trace;
+    rs.progress = [tty, &trace](int step, double f, double fmax) {
+      trace.evaluation.push_back(step);
+      trace.freeEnergy.push_back(f);
+      trace.maxForce.push_back(fmax);
       std::cerr << fmt::format("{}relax: evaluation {:4d}  F = {:.10f} Ha  max|force| = {:.2e} Ha/Bohr{}",
                                tty ? "\r" : "", step, f, fmax, tty ? "   " : "\n");
     };
@@ -93,6 +143,7 @@ int runCell(const RunOptions& o) {
     if (tty) std::cerr << "\n";
     cell = relax->cell;
     result = relax->result;
+    if (!o.plot.empty()) writeRelaxPlot(o.plot, trace, rs.forceTolerance);
   } else {
     const bool forces = in.task.type == "forces";
     result = calc.evaluate(cell, {forces, forces});
@@ -129,6 +180,8 @@ Command makeRunCommand() {
                   "<cell>-relaxed)");
     s->add_option("--unroll", opts->unroll,
                   "also write PREFIX-unrolled.xyz with this many screw steps of images");
+    s->add_option("--plot", opts->plot,
+                  "task relax: write the relaxation history (max force, energy change) as PNG");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

@@ -30,7 +30,7 @@ KinematicMap::KinematicMap(const Boundary& b, int n)
     : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0) {
   for (const FixedDofs& f : b.fixed) {
     fixed[f.element] = &f;
-    if (f.allRotationsFixed()) kinematicRotation[f.element] = 1;
+    if (f.fixed[3] || f.fixed[4] || f.fixed[5]) kinematicRotation[f.element] = 1;
   }
   for (const Prescribed& p : b.prescribed) {
     prescribed[p.element] = &p;
@@ -52,13 +52,32 @@ void KinematicMap::apply(Bodies& s, double t) const {
     if (f->allRotationsFixed()) {
       s.angularMomentumBody[i].setZero();
     } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {
-      // Projection of the world angular velocity (exact for rotations about principal axes).
-      Vec3 w = s.angularVelocityWorld(i);
-      for (int d = 0; d < 3; ++d)
-        if (f->fixed[3 + d]) w[d] = 0.0;
-      s.setAngularVelocityWorld(i, w);
+      s.setAngularVelocityWorld(i, constrainedAngularVelocity(s, i, f->fixed));
     }
   }
+}
+
+Vec3 constrainedAngularVelocity(const Bodies& s, int i, const std::array<bool, 6>& fixed) {
+  // World inertia tensor I_w = R diag(I) R^T and world angular momentum L = R pi.
+  const Mat3 r = toMatrix(s.orientation[i]);
+  const Mat3 iw = r * s.inertia[i].asDiagonal() * r.transpose();
+  const Vec3 l = r * s.angularMomentumBody[i];
+  int freeAxes[3], n = 0;
+  for (int d = 0; d < 3; ++d)
+    if (!fixed[3 + d]) freeAxes[n++] = d;
+  Vec3 w = Vec3::Zero();
+  if (n == 1) {
+    w[freeAxes[0]] = l[freeAxes[0]] / iw(freeAxes[0], freeAxes[0]);
+  } else if (n == 2) {
+    const int a = freeAxes[0], b = freeAxes[1];
+    Eigen::Matrix2d m;
+    m << iw(a, a), iw(a, b), iw(b, a), iw(b, b);
+    const Eigen::Vector2d x = m.ldlt().solve(Eigen::Vector2d(l[a], l[b]));
+    w[a] = x[0], w[b] = x[1];
+  } else if (n == 3) {
+    w = iw.ldlt().solve(l);
+  }
+  return w;
 }
 
 void KinematicMap::clearConstrainedForces(Bodies& s) const {

@@ -1,7 +1,7 @@
 #pragma once
 // Boundary conditions: fixed degrees of freedom, applied loads and prescribed motions.
 // Fixed DOFs and prescribed motions are kinematic: the integrator overwrites the velocities
-// after each half kick (constraints.cpp). Loads are an effect (LoadEffect), built whenever the
+// after each half kick (KinematicMap::apply). Loads are an effect (LoadEffect), built whenever the
 // scene has loads.
 #include <array>
 #include <vector>
@@ -53,8 +53,19 @@ struct Boundary {
   std::vector<Prescribed> prescribed;
 };
 
-// Per element: 0 = free, 1 = some DOFs fixed, 2 = rotation kinematic (all rotations fixed or
-// prescribed; the orientation is then advanced by exp(h omega_world) instead of the free rotor).
+// Fixed rotational DOFs are velocity constraints on the world angular velocity: omega_d = 0 for
+// every fixed axis d, at all times (so the rotation probe integral of omega_d dt stays 0). The
+// constraint acts by impulses along the fixed world axes only: after each kick the free world
+// components of the angular momentum L = I_w omega (I_w = R diag(I) R^T) are kept and the fixed
+// components of omega are zeroed, omega = P (P^T I_w P)^{-1} P^T L with P the free axes
+// (constrainedAngularVelocity). The orientation then advances kinematically,
+// q <- exp(h omega) q. With one free axis e this is the exact hinge: the body turns about e only,
+// q(t) = exp(phi e) q(0), with the constant moment of inertia e^T I_w e, whether or not e is a
+// principal axis. With two free axes the constraint is non-holonomic (finite rotations about
+// x and y compose to some rotation about z; only the angular velocity about z is zero).
+//
+// Per element of the map: kinematicRotation = 1 when some rotation is fixed or prescribed (the
+// orientation is then advanced by exp(h omega_world) instead of the free rotor).
 struct KinematicMap {
   std::vector<const FixedDofs*> fixed;         // per element or nullptr
   std::vector<const Prescribed*> prescribed;   // per element or nullptr
@@ -67,6 +78,10 @@ struct KinematicMap {
   // damping, which must see the unbalanced force only).
   void clearConstrainedForces(Bodies& s) const;
 };
+
+// World angular velocity of element i with the rotational DOFs `fixed[3..5]` locked, from its
+// current angular momentum (see above).
+Vec3 constrainedAngularVelocity(const Bodies& s, int i, const std::array<bool, 6>& fixed);
 
 class LoadEffect : public Effect {
  public:

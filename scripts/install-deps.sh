@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev liblapack-dev libopenblas-dev liblapacke-dev
   libfftw3-dev libxc-dev libgtest-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libpng-dev
 )
 missing=()
 for p in "${packages[@]}"; do

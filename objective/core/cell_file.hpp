@@ -20,6 +20,11 @@ inline constexpr double kDefaultLjR0Angstrom = 3.80;
 inline constexpr double kDefaultLjCutoffAngstrom = 30.0;
 // Default C-C bond length of the [builder] table (Å).
 inline constexpr double kDefaultBondLengthAngstrom = 1.42;
+// Defaults of [builder] type = "collapsed" (Å): the graphite interlayer distance and starting
+// radii of the dog-bone contour (the relaxation refines them).
+inline constexpr double kDefaultCollapseInterlayerAngstrom = 3.4;
+inline constexpr double kDefaultCollapseBulbRadiusAngstrom = 3.4;
+inline constexpr double kDefaultCollapseTransitionRadiusAngstrom = 3.4;
 // Atoms (and images) closer than this are an input error (Å).
 inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "objective/core/collapsed_tube_builder.hpp"
 #include "objective/core/gen_file.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
@@ -194,8 +195,7 @@ ObjectiveCell readNanotubeBuilder(const TomlTable& b) {
 }
 
 // walls = [[n1, m1], [n2, m2], ...]
-ObjectiveCell readMultiWallBuilder(const TomlTable& b) {
-  b.allowOnly({"type", "walls", "bond_length"});
+std::vector<std::pair<int, int>> readWalls(const TomlTable& b) {
   const char* expected = "walls = [[n, m], ...] with at least one pair of chiral indices";
   const toml::value& v = b.at("walls");
   if (!v.is_array() || v.as_array().empty()) b.fail("walls", "another value", expected);
@@ -209,7 +209,39 @@ ObjectiveCell readMultiWallBuilder(const TomlTable& b) {
       b.fail("walls", fmt::format("({}, {})", n, m), "chiral indices 1 <= n, 0 <= m <= 10000");
     walls.emplace_back(static_cast<int>(n), static_cast<int>(m));
   }
-  return buildMultiWallTranslational(walls, readBondLength(b));
+  return walls;
+}
+
+ObjectiveCell readMultiWallBuilder(const TomlTable& b) {
+  b.allowOnly({"type", "walls", "bond_length"});
+  return buildMultiWallTranslational(readWalls(b), readBondLength(b));
+}
+
+// A positive length in Å (with a default), returned in Bohr.
+double readPositiveLength(const TomlTable& b, const char* key, double defaultAngstrom,
+                          const char* meaning) {
+  double x = defaultAngstrom;
+  if (b.has(key)) {
+    x = b.number(key, fmt::format("a positive {} (Å)", meaning));
+    if (!(x > 0.0)) b.fail(key, fmt::format("{} Å", x), fmt::format("a positive {} (Å)", meaning));
+  }
+  return x * kAngstromInBohr;
+}
+
+ObjectiveCell readCollapsedBuilder(const TomlTable& b) {
+  b.allowOnly({"type", "walls", "bond_length", "interlayer", "bulb_radius", "transition_radius"});
+  CollapseShape shape;
+  shape.interlayer = readPositiveLength(b, "interlayer", kDefaultCollapseInterlayerAngstrom,
+                                        "distance between the flat faces");
+  shape.bulbRadius = readPositiveLength(b, "bulb_radius", kDefaultCollapseBulbRadiusAngstrom,
+                                        "bulb radius of the innermost wall");
+  shape.transitionRadius =
+      readPositiveLength(b, "transition_radius", kDefaultCollapseTransitionRadiusAngstrom,
+                         "transition radius of the outermost wall");
+  if (!(shape.bulbRadius > shape.interlayer / 2))
+    b.fail("bulb_radius", fmt::format("{} Å", shape.bulbRadius * kBohrInAngstrom),
+           "a bulb radius larger than half the interlayer distance");
+  return buildCollapsedTube(readWalls(b), readBondLength(b), shape);
 }
 
 ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
@@ -239,12 +271,13 @@ ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
 }
 
 ObjectiveCell readBuilder(const TomlTable& b) {
-  const std::string type =
-      b.string("type", "type = \"nanotube\", \"multiwall\" or \"graphene_ring\"");
+  const char* types = "\"nanotube\", \"multiwall\", \"collapsed\" or \"graphene_ring\"";
+  const std::string type = b.string("type", std::string("type = ") + types);
   if (type == "nanotube") return readNanotubeBuilder(b);
   if (type == "multiwall") return readMultiWallBuilder(b);
+  if (type == "collapsed") return readCollapsedBuilder(b);
   if (type == "graphene_ring") return readGrapheneRingBuilder(b);
-  b.fail("type", "\"" + type + "\"", "\"nanotube\", \"multiwall\" or \"graphene_ring\"");
+  b.fail("type", "\"" + type + "\"", types);
 }
 
 }  // namespace

@@ -1,0 +1,283 @@
+#include "ewald/helical_lattice_sum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "ewald/helical_reciprocal.hpp"
+#include "objective/core/images.hpp"
+
+namespace mesochain::ewald {
+
+using objective::GroupElement;
+using objective::ObjectiveCell;
+using objective::Symmetry;
+using units::kPi;
+
+namespace {
+
+constexpr const char* kSource = "<ewald>";
+constexpr double kMinTolerance = 1e-13;
+constexpr double kMaxTolerance = 1e-2;
+constexpr long kMaxImagesPerPair = 50000000;
+
+double fullKernel(Kernel k, double r) {
+  return k == Kernel::Coulomb ? 1 / r : 1 / (r * r * r * r * r * r);
+}
+// d/dr of the full kernel.
+double fullKernelDerivative(Kernel k, double r) {
+  return k == Kernel::Coulomb ? -1 / (r * r) : -6 / (r * r * r * r * r * r * r);
+}
+
+// Short-range split kernel, eq. (E3): erfc(alpha r)/r, or Gamma(3, a) / (2 r^6), a = alpha^2 r^2.
+double shortKernel(Kernel k, double alpha, double r) {
+  if (k == Kernel::Coulomb) return std::erfc(alpha * r) / r;
+  const double a = alpha * alpha * r * r;
+  return std::exp(-a) * (1 + a + 0.5 * a * a) / std::pow(r, 6);
+}
+double shortKernelDerivative(Kernel k, double alpha, double r) {
+  if (k == Kernel::Coulomb)
+    return -std::erfc(alpha * r) / (r * r) -
+           2 * alpha / std::sqrt(kPi) * std::exp(-alpha * alpha * r * r) / r;
+  const double a = alpha * alpha * r * r;
+  return -alpha * alpha * a * a * std::exp(-a) / std::pow(r, 5) - 6 * shortKernel(k, alpha, r) / r;
+}
+// The identity image's long-range part, int_0^{alpha^2} w(t) dt, eq. (E15).
+double selfLongRange(Kernel k, double alpha) {
+  return k == Kernel::Coulomb ? 2 * alpha / std::sqrt(kPi) : std::pow(alpha, 6) / 6;
+}
+
+double shortestDistance(const ObjectiveCell& cell) {
+  const int n = cell.atomCount();
+  double cutoff = 4.0;
+  for (int attempt = 0; attempt < 12; ++attempt, cutoff *= 2) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j)
+        objective::forEachImageNear(cell.symmetry, cell.positions.col(i), cell.positions.col(j),
+                                    cutoff, [&](const GroupElement& g, const Eigen::Vector3d& y) {
+                                      if (i == j && g.isIdentity()) return;
+                                      best = std::min(best, (y - cell.positions.col(i)).norm());
+                                    });
+    if (std::isfinite(best)) return best;
+    if (cell.symmetry.isRing() && cell.symmetry.rotationOrder() == 1 && n == 1) break;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+struct Resolved {
+  LatticeSumPlan plan;
+  detail::ReciprocalSetup setup;
+};
+
+// Splitting parameter from a cost model (real-space images vs. reciprocal terms) unless given,
+// then every truncation from the tolerance (docs/ewald.md section "Truncations").
+Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCell& cell) {
+  const double tol = st.tolerance;
+  if (!(tol >= kMinTolerance && tol <= kMaxTolerance))
+    throw InputError(kSource, "ewald tolerance", std::to_string(tol),
+                     "a relative tolerance between 1e-13 and 1e-2 (tighter cannot be met in "
+                     "double precision)");
+  if (st.splitting && !(std::isfinite(*st.splitting) && *st.splitting > 0))
+    throw InputError(kSource, "ewald splitting", std::to_string(*st.splitting),
+                     "a positive splitting parameter (1/Bohr)");
+  Resolved r;
+  LatticeSumPlan& p = r.plan;
+  p.shortestDistance = shortestDistance(cell);
+  const double dmin = std::isfinite(p.shortestDistance) ? p.shortestDistance : 1.0;
+  p.elementTolerance = tol * fullKernel(kernel, dmin);
+  const Symmetry& sym = cell.symmetry;
+  if (sym.isRing()) return r;
+  const double T = sym.translation();
+  const int na = sym.rotationOrder();
+  double rhoMax = 1.0;
+  for (int i = 0; i < cell.atomCount(); ++i)
+    rhoMax = std::max(rhoMax, std::hypot(cell.positions(0, i), cell.positions(1, i)));
+  const double L = std::log(1 / tol) + 3;
+  if (st.splitting) {
+    p.splitting = *st.splitting;
+  } else {
+    // cost(alpha) ~ N_a (2 r_c / T + 1) + c_r (l_max / N_a + 1)(q_max T / pi + 1),
+    // r_c = sqrt(L) / alpha, l_max = 2 alpha rho_max sqrt(L), q_max = 2 alpha sqrt(L).
+    double best = std::numeric_limits<double>::infinity();
+    for (double a = 0.02; a < 5.0; a *= 1.05) {
+      const double rc = std::sqrt(L) / a;
+      const double real = na * (2 * rc / T + 1) * 2.0;
+      const double recip = 30.0 * (2 * a * rhoMax * std::sqrt(L) / na + 1) *
+                           (2 * a * std::sqrt(L) * T / kPi + 1);
+      if (real + recip < best) best = real + recip, p.splitting = a;
+    }
+  }
+  const double alpha = p.splitting;
+  // Real-space cutoff: the short kernel times the number of images per unit length beyond it.
+  double rc = 1.0;
+  auto tail = [&](double x) {
+    return shortKernel(kernel, alpha, x) * na * (2 + 1 / (alpha * alpha * x * T));
+  };
+  while (tail(rc) > 0.05 * p.elementTolerance) rc *= 1.05;
+  p.realSpaceCutoff = rc;
+  if (na * (2 * rc / T + 1) > kMaxImagesPerPair)
+    throw NumericalError("helical Ewald: more than " + std::to_string(kMaxImagesPerPair) +
+                         " real-space images per pair (choose a larger splitting parameter)");
+  r.setup.kernel = kernel;
+  r.setup.alpha = alpha;
+  r.setup.translation = T;
+  r.setup.twist = sym.twist();
+  r.setup.rotationOrder = na;
+  // Half of the element budget goes to the reciprocal part.
+  r.setup.elementTolerance = 0.5 * p.elementTolerance;
+  return r;
+}
+
+struct Site {
+  double rho, phi;
+};
+Site site(const Eigen::Vector3d& x) { return {std::hypot(x.x(), x.y()), std::atan2(x.y(), x.x())}; }
+
+// Visits the pair (i, j): f(value, contribution callback data). Shared by matrix and derivatives.
+struct PairResult {
+  double value = 0;
+  Eigen::Vector3d gradI = Eigen::Vector3d::Zero(), gradJ = Eigen::Vector3d::Zero();
+  double dT = 0, dGamma = 0;
+};
+
+PairResult pairSum(Kernel kernel, const Resolved& r, const ObjectiveCell& cell, int i, int j,
+                   bool withDerivatives) {
+  const Symmetry& sym = cell.symmetry;
+  const Eigen::Vector3d xi = cell.positions.col(i), xj = cell.positions.col(j);
+  PairResult out;
+  if (sym.isRing()) {
+    // A closed ring is finite: the direct sum over C_Na, eq. (E16).
+    for (int c = 0; c < sym.rotationOrder(); ++c) {
+      const GroupElement g{0, c};
+      if (i == j && g.isIdentity()) continue;
+      const Eigen::Vector3d d = sym.apply(g, xj) - xi;
+      const double dist = d.norm();
+      out.value += fullKernel(kernel, dist);
+      if (withDerivatives) {
+        const Eigen::Vector3d u = fullKernelDerivative(kernel, dist) / dist * d;
+        out.gradI -= u;
+        out.gradJ += sym.rotation(g).transpose() * u;
+      }
+    }
+    return out;
+  }
+  const double alpha = r.plan.splitting;
+  // Real-space part, eq. (E4).
+  objective::forEachImageNear(
+      sym, xi, xj, r.plan.realSpaceCutoff, [&](const GroupElement& g, const Eigen::Vector3d& y) {
+        if (i == j && g.isIdentity()) return;
+        const Eigen::Vector3d d = y - xi;
+        const double dist = d.norm();
+        out.value += shortKernel(kernel, alpha, dist);
+        if (!withDerivatives) return;
+        const Eigen::Vector3d u = shortKernelDerivative(kernel, alpha, dist) / dist * d;
+        out.gradI -= u;
+        out.gradJ += sym.rotation(g).transpose() * u;
+        out.dT += u.z() * static_cast<double>(g.zeta);
+        out.dGamma += u.dot(objective::rotationZDerivative(sym.angle(g)) * xj) *
+                      static_cast<double>(g.zeta);
+      });
+  // Long-range part, eq. (E12).
+  const Site si = site(xi), sj = site(xj);
+  const detail::PairLongRange lr =
+      detail::longRangePair(r.setup, si.rho, sj.rho, si.phi - sj.phi, xi.z() - xj.z(), withDerivatives);
+  out.value += lr.value;
+  if (i == j) out.value -= selfLongRange(kernel, alpha);
+  if (withDerivatives) {
+    auto cyl = [](const Site& s, double dRho, double gradPhi, double dz) {
+      const double c = std::cos(s.phi), sn = std::sin(s.phi);
+      return Eigen::Vector3d(c * dRho - sn * gradPhi, sn * dRho + c * gradPhi, dz);
+    };
+    out.gradI += cyl(si, lr.dRhoI, lr.gradPhiI, lr.dDz);
+    out.gradJ += cyl(sj, lr.dRhoJ, lr.gradPhiJ, -lr.dDz);
+    out.dT += lr.dTranslation;
+    out.dGamma += lr.dTwist;
+  }
+  return out;
+}
+
+}  // namespace
+
+HelicalLatticeSum::HelicalLatticeSum(Kernel kernel, LatticeSumSettings settings)
+    : kernel_(kernel), settings_(std::move(settings)) {
+  const double tol = settings_.tolerance;
+  if (!(tol >= kMinTolerance && tol <= kMaxTolerance))
+    throw InputError(kSource, "ewald tolerance", std::to_string(tol),
+                     "a relative tolerance between 1e-13 and 1e-2 (tighter cannot be met in "
+                     "double precision)");
+}
+
+LatticeSumPlan HelicalLatticeSum::plan(const ObjectiveCell& cell) const {
+  Resolved r = resolve(kernel_, settings_, cell);
+  if (!cell.symmetry.isRing()) {
+    // Report the reciprocal truncation of the widest pair (largest radii).
+    int far = 0;
+    for (int i = 0; i < cell.atomCount(); ++i)
+      if (cell.positions.col(i).head<2>().norm() > cell.positions.col(far).head<2>().norm()) far = i;
+    if (cell.atomCount() > 0) {
+      const Site s = site(cell.positions.col(far));
+      const auto lr = detail::longRangePair(r.setup, s.rho, s.rho, 0, 0, false);
+      r.plan.maxAngularOrder = lr.maxOrder;
+      r.plan.reciprocalTerms = lr.terms;
+      r.plan.quadratureNodes = lr.nodes;
+    }
+  }
+  return r.plan;
+}
+
+Eigen::MatrixXd HelicalLatticeSum::matrix(const ObjectiveCell& cell) const {
+  const int n = cell.atomCount();
+  const Resolved r = resolve(kernel_, settings_, cell);
+  Eigen::MatrixXd phi(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = i; j < n; ++j) phi(i, j) = phi(j, i) = pairSum(kernel_, r, cell, i, j, false).value;
+  return phi;
+}
+
+HelicalLatticeSum::Derivatives HelicalLatticeSum::derivatives(const ObjectiveCell& cell,
+                                                              const Eigen::MatrixXd& w) const {
+  const int n = cell.atomCount();
+  if (w.rows() != n || w.cols() != n)
+    throw InputError(kSource, "weights", std::to_string(w.rows()) + " x " + std::to_string(w.cols()),
+                     "an N_o x N_o matrix, N_o = " + std::to_string(n));
+  if (kernel_ == Kernel::Coulomb && !cell.symmetry.isRing()) {
+    const double total = w.sum(), scale = w.cwiseAbs().sum();
+    if (std::abs(total) > 1e-10 * std::max(scale, 1e-300))
+      throw InputError(kSource, "charges", "a cell of net weight " + std::to_string(total),
+                       "a neutral cell (sum of charges 0): the Coulomb sum over a screw diverges "
+                       "otherwise");
+  }
+  const Resolved r = resolve(kernel_, settings_, cell);
+  Derivatives d;
+  d.gradient = Eigen::Matrix3Xd::Zero(3, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = i; j < n; ++j) {
+      const double wij = (i == j ? 0.5 : 1.0) * 0.5 * (w(i, j) + w(j, i));
+      if (wij == 0) continue;
+      const PairResult p = pairSum(kernel_, r, cell, i, j, true);
+      d.energy += wij * p.value;
+      d.gradient.col(i) += wij * p.gradI;
+      d.gradient.col(j) += wij * p.gradJ;
+      d.dTranslation += wij * p.dT;
+      d.dTwist += wij * p.dGamma;
+    }
+  return d;
+}
+
+double HelicalLatticeSum::energy(const ObjectiveCell& cell, const Eigen::VectorXd& q) const {
+  if (q.size() != cell.atomCount())
+    throw InputError(kSource, "charges", std::to_string(q.size()) + " values",
+                     std::to_string(cell.atomCount()) + " (one per cell atom)");
+  if (kernel_ == Kernel::Coulomb && !cell.symmetry.isRing() &&
+      std::abs(q.sum()) > 1e-10 * std::max(q.cwiseAbs().sum(), 1e-300))
+    throw InputError(kSource, "charges", "net charge " + std::to_string(q.sum()) + " per cell",
+                     "a neutral cell (sum of charges 0): the Coulomb sum over a screw diverges "
+                     "otherwise");
+  return 0.5 * q.dot(matrix(cell) * q);
+}
+
+}  // namespace mesochain::ewald

@@ -1,0 +1,74 @@
+#pragma once
+// Shared set-up for the contact tests: a (10,10)-like tube (R = 0.678 nm) with the carbon
+// Lennard-Jones parameters eps = 2.84 meV, sigma = 0.34 nm, graphene surface density
+// 38.2 atoms/nm^2, and an independent reference: the LJ energy of two finite cylindrical
+// surfaces by direct quadrature (Gauss-Legendre along the axes, trapezoid around them).
+#include <cmath>
+#include <memory>
+
+#include "mdem/contacts/tube_potential.hpp"
+#include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/units.hpp"
+
+namespace mesochain::mdem::testing {
+
+inline constexpr double kTubeRadius = 0.678;  // nm
+inline constexpr double kSegmentLength = 2.0;  // nm
+
+inline LennardJones carbonLj() {
+  return {2.84e-3 * units::kElectronvolt, 0.34, 38.2};
+}
+
+inline TubePairSpec tubeSpec() {
+  TubePairSpec s;
+  s.lj = carbonLj();
+  s.radiusA = s.radiusB = kTubeRadius;
+  s.switchGap = 0.8;
+  s.cutoffGap = 1.2;
+  return s;
+}
+
+// Built once per test binary (about 0.1 s).
+inline const TubePairPotential& tubePotential() {
+  static const TubePairPotential p(tubeSpec());
+  return p;
+}
+
+// Direct LJ quadrature over two cylindrical surfaces (no caps): n^2 \int\int phi(|p - q|) dA dA.
+inline double surfaceReferenceEnergy(const Segment& a, const Segment& b, double radius,
+                                     int axialPanels = 10, int angular = 48) {
+  const LennardJones lj = carbonLj();
+  const QuadratureRule gl = gaussLegendre(6);
+  struct Point { Vec3 x; double w; };
+  auto surface = [&](const Segment& s) {
+    std::vector<Point> pts;
+    const Vec3 e1 = s.axis.unitOrthogonal(), e2 = s.axis.cross(e1);
+    const double da = 2.0 * units::kPi / angular;
+    for (int p = 0; p < axialPanels; ++p) {
+      const double z0 = -s.halfLength + 2.0 * s.halfLength * p / axialPanels;
+      const double z1 = z0 + 2.0 * s.halfLength / axialPanels;
+      for (std::size_t q = 0; q < gl.x.size(); ++q) {
+        const double z = 0.5 * (z0 + z1) + 0.5 * (z1 - z0) * gl.x[q];
+        const double wz = 0.5 * (z1 - z0) * gl.w[q];
+        for (int k = 0; k < angular; ++k)
+          pts.push_back({s.centre + z * s.axis + radius * (std::cos(k * da) * e1 + std::sin(k * da) * e2),
+                         wz * radius * da});
+      }
+    }
+    return pts;
+  };
+  const auto pa = surface(a), pb = surface(b);
+  double e = 0.0;
+  for (const Point& p : pa) {
+    double row = 0.0;
+    for (const Point& q : pb) {
+      const double r2 = (p.x - q.x).squaredNorm();
+      const double s2 = lj.sigma * lj.sigma / r2, s6 = s2 * s2 * s2;
+      row += q.w * (s6 * s6 - s6);
+    }
+    e += p.w * row;
+  }
+  return 4.0 * lj.epsilon * lj.surfaceDensity * lj.surfaceDensity * e;
+}
+
+}  // namespace mesochain::mdem::testing
