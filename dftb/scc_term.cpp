@@ -65,9 +65,9 @@ SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> p
   if (scc_.maxIterations < 1)
     throw InputError("<scc>", "scc.max_iterations", std::to_string(scc_.maxIterations),
                      "a positive count");
-  if (!(scc_.ewaldTolerance > 0.0 && scc_.ewaldTolerance < 1.0))
-    throw InputError("<scc>", "scc.ewald_tolerance", std::to_string(scc_.ewaldTolerance),
-                     "a number in (0, 1)");
+  if (!(scc_.ewaldTolerance >= 1e-13 && scc_.ewaldTolerance <= 1e-2))
+    throw InputError("<scc>", "scc.ewald_tolerance", fmt("%.3g", scc_.ewaldTolerance),
+                     "a tolerance in [1e-13, 1e-2]");
   makeChargeMixer(scc_.mixer, scc_.mixing);  // validates the mixer name and mixing
   coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
   shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),

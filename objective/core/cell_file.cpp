@@ -183,8 +183,8 @@ void readScc(const TomlTable& root, CellInput& in) {
   s.energyTolerance = bounded("energy_tolerance", s.energyTolerance, 1e-13, 1.0,
                               "an energy tolerance in [1e-13, 1] (Hartree per cell)");
   s.mixing = bounded("mixing", s.mixing, 1e-6, 1.0, "a mixing parameter in (0, 1]");
-  s.ewaldTolerance = bounded("ewald_tolerance", s.ewaldTolerance, 1e-15, 1e-2,
-                             "a tolerance in [1e-15, 1e-2]");
+  s.ewaldTolerance = bounded("ewald_tolerance", s.ewaldTolerance, 1e-13, 1e-2,
+                             "a tolerance in [1e-13, 1e-2]");
   if (t->has("max_iterations")) {
     const long n = t->integer("max_iterations", "a positive integer");
     if (n < 1 || n > 100000L) t->fail("max_iterations", std::to_string(n), "1 .. 100000");
