@@ -13,14 +13,15 @@ Command makeBenchDftbCommand();
 Command makeBenchKpointsCommand();
 Command makeBenchDemCommand();
 Command makeBenchEwaldCommand();
+Command makeBenchSccCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(
       std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-                           makeBenchEwaldCommand()});
+                           makeBenchEwaldCommand(), makeBenchSccCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
-    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald");
+    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

@@ -88,6 +88,14 @@ dftb::Calculator makeCalculator(const objective::CellInput& in) {
     s.dispersion.ewald = in.dispersion.summation == "ewald";
     s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
   }
+  s.scc.enabled = in.scc.enabled;
+  s.scc.chargeTolerance = in.scc.chargeTolerance;
+  s.scc.energyTolerance = in.scc.energyTolerance;
+  s.scc.maxIterations = in.scc.maxIterations;
+  s.scc.mixer = in.scc.mixer;
+  s.scc.mixing = in.scc.mixing;
+  s.scc.ewaldTolerance = in.scc.ewaldTolerance;
+  s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
   return dftb::Calculator(params, s);
 }
 

@@ -59,6 +59,7 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
       {"entropy_term_ts", perCellAndAtom(r.entropyTerm, n)},
       {"repulsive", perCellAndAtom(r.repulsive, n)},
       {"dispersion", perCellAndAtom(r.dispersion, n)},
+      {"scc", perCellAndAtom(r.scc, n)},
       {"total", perCellAndAtom(r.totalEnergy, n)},
       {"mermin_free", perCellAndAtom(r.freeEnergy, n)},
       {"extrapolated_zero_temperature", perCellAndAtom(r.extrapolatedEnergy, n)}};
@@ -74,6 +75,24 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
   j["homo_hartree"] = std::isfinite(homo) ? json(homo) : json(nullptr);
   j["lumo_hartree"] = std::isfinite(lumo) ? json(lumo) : json(nullptr);
   j["gap_hartree"] = std::isfinite(homo) && std::isfinite(lumo) ? json(lumo - homo) : json(nullptr);
+  if (input.scc.enabled) {
+    j["energies_hartree"]["h0"] = perCellAndAtom(extra(r, "h0_energy"), n);
+    j["energies_hartree"]["scc_coulomb"] = perCellAndAtom(extra(r, "scc_energy"), n);
+    json history = json::array();
+    const auto& he = r.series.at("scc_history_energy");
+    const auto& hr = r.series.at("scc_history_residual");
+    for (size_t m = 0; m < he.size(); ++m)
+      history.push_back({{"mermin_free_hartree", he[m]}, {"max_charge_change_e", hr[m]}});
+    j["scc"] = {{"converged", extra(r, "scc_converged") == 1.0},
+                {"iterations", static_cast<int>(extra(r, "scc_iterations"))},
+                {"charge_tolerance_e", input.scc.chargeTolerance},
+                {"energy_tolerance_hartree", input.scc.energyTolerance},
+                {"mixer", input.scc.mixer},
+                {"mixing", input.scc.mixing},
+                {"mulliken_charges_e", r.series.at("mulliken_charges")},
+                {"mulliken_populations_e", r.series.at("mulliken_populations")},
+                {"history", history}};
+  }
   if (r.gradient.size()) {
     j["forces_hartree_per_bohr"] = matrixRows(-r.gradient);
     j["max_force_hartree_per_bohr"] = objective::maxForce(r.gradient);
@@ -126,11 +145,21 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
   row("band", r.bandEnergy);
   row("repulsive", r.repulsive);
   if (input.dispersion.model != "none") row("dispersion", r.dispersion);
+  if (input.scc.enabled) row("SCC (double counting + Coulomb)", r.scc);
   row("-TS", -r.entropyTerm);
   row("total", r.totalEnergy);
   row("Mermin free energy", r.freeEnergy);
   row("extrapolated to T = 0", r.extrapolatedEnergy);
   out << fmt::format("Fermi level: {:.8f} Ha\n", extra(r, "fermi_level"));
+  if (input.scc.enabled) {
+    const bool ok = extra(r, "scc_converged") == 1.0;
+    out << fmt::format("SCC: {} after {} iterations (last max charge change {:.2e} e)\n",
+                       ok ? "converged" : "NOT CONVERGED (result flagged)",
+                       static_cast<int>(extra(r, "scc_iterations")), extra(r, "scc_residual"));
+    out << "Mulliken charges (e):";
+    for (double q : r.series.at("mulliken_charges")) out << fmt::format(" {:+.5f}", q);
+    out << "\n";
+  }
   if (r.gradient.size())
     out << fmt::format("largest force: {:.3e} Ha/Bohr\n", objective::maxForce(r.gradient));
   if (!sym.isRing() && r.gradient.size())

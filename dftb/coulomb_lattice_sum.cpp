@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "dftb/image_pair_sum.hpp"
+#include "ewald/helical_lattice_sum.hpp"
 
 namespace mesochain::dftb {
 
@@ -36,8 +37,28 @@ LatticeSumDerivatives DirectRingCoulombSum::derivatives(const objective::Objecti
   return imagePairDerivatives(cell, allRingImages(cell), weights, coulomb);
 }
 
-std::unique_ptr<CoulombLatticeSum> makeCoulombLatticeSum(double /*tolerance*/) {
-  return std::make_unique<DirectRingCoulombSum>();
+struct HelicalEwaldCoulombSum::Impl {
+  ewald::HelicalLatticeSum sum;
+};
+
+HelicalEwaldCoulombSum::HelicalEwaldCoulombSum(double tolerance)
+    : impl_(std::make_unique<Impl>(Impl{ewald::HelicalLatticeSum(
+          ewald::Kernel::Coulomb, ewald::LatticeSumSettings{tolerance, std::nullopt})})) {}
+
+HelicalEwaldCoulombSum::~HelicalEwaldCoulombSum() = default;
+
+Eigen::MatrixXd HelicalEwaldCoulombSum::matrix(const objective::ObjectiveCell& cell) const {
+  return impl_->sum.matrix(cell);
+}
+
+LatticeSumDerivatives HelicalEwaldCoulombSum::derivatives(const objective::ObjectiveCell& cell,
+                                                          const Eigen::MatrixXd& weights) const {
+  const auto d = impl_->sum.derivatives(cell, weights);
+  return {d.gradient, d.dTranslation, d.dTwist};
+}
+
+std::unique_ptr<CoulombLatticeSum> makeCoulombLatticeSum(double tolerance) {
+  return std::make_unique<HelicalEwaldCoulombSum>(tolerance);
 }
 
 }  // namespace mesochain::dftb

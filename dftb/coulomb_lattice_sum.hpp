@@ -28,7 +28,23 @@ class CoulombLatticeSum {
                                             const Eigen::MatrixXd& weights) const = 0;
 };
 
-// Direct sum over the N_a images of a closed ring; a screw cell is an InputError.
+// The helical Ewald sum of ewald/ (screw cells, C_Na, and rings by direct sum) behind this
+// interface; tolerance as ewald::LatticeSumSettings (relative to 1/d_min, in [1e-13, 1e-2]).
+class HelicalEwaldCoulombSum : public CoulombLatticeSum {
+ public:
+  explicit HelicalEwaldCoulombSum(double tolerance);
+  ~HelicalEwaldCoulombSum() override;
+  Eigen::MatrixXd matrix(const objective::ObjectiveCell& cell) const override;
+  LatticeSumDerivatives derivatives(const objective::ObjectiveCell& cell,
+                                    const Eigen::MatrixXd& weights) const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Direct sum over the N_a images of a closed ring; a screw cell is an InputError. An
+// independent reference for the Ewald path in the tests.
 class DirectRingCoulombSum : public CoulombLatticeSum {
  public:
   Eigen::MatrixXd matrix(const objective::ObjectiveCell& cell) const override;

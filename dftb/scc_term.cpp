@@ -30,6 +30,13 @@ std::vector<double> hubbardPerSpecies(const ParameterSet& params) {
   return u;
 }
 
+template <class... Args>
+std::string fmt(const char* format, Args... args) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, format, args...);
+  return buffer;
+}
+
 std::string historyTable(const std::vector<double>& energy, const std::vector<double>& residual) {
   std::string s = "  iteration  free energy (Ha)        max |q_out - q_in| (e)\n";
   char line[128];
@@ -58,9 +65,9 @@ SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> p
   if (scc_.maxIterations < 1)
     throw InputError("<scc>", "scc.max_iterations", std::to_string(scc_.maxIterations),
                      "a positive count");
-  if (!(scc_.ewaldTolerance > 0.0 && scc_.ewaldTolerance < 1.0))
-    throw InputError("<scc>", "scc.ewald_tolerance", std::to_string(scc_.ewaldTolerance),
-                     "a number in (0, 1)");
+  if (!(scc_.ewaldTolerance >= 1e-13 && scc_.ewaldTolerance <= 1e-2))
+    throw InputError("<scc>", "scc.ewald_tolerance", fmt("%.3g", scc_.ewaldTolerance),
+                     "a tolerance in [1e-13, 1e-2]");
   makeChargeMixer(scc_.mixer, scc_.mixing);  // validates the mixer name and mixing
   coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
   shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),
@@ -128,9 +135,10 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
       bestResidual = residual;
       sinceBest = 0;
     } else if (++sinceBest >= 10) {
-      reason = "stagnated: no decrease of the residual below " + std::to_string(bestResidual) +
-               " e in 10 iterations (a tolerance below the precision of the charges, or "
-               "charge sloshing; try mixer = \"simple\" with a smaller mixing)";
+      reason = fmt("stagnated: no decrease of the residual below %.3e e in 10 iterations (a "
+                   "tolerance below the precision of the charges, or charge sloshing: try "
+                   "mixer = \"broyden\" or a smaller mixing)",
+                   bestResidual);
       break;
     }
     if (it + 1 < scc_.maxIterations) dqIn = mixer->next(dqIn, dqOut);
@@ -139,9 +147,10 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
   if (!converged && reason.empty())
     reason = "not converged in max_iterations = " + std::to_string(scc_.maxIterations);
   if (!converged && scc_.stopIfUnconverged)
-    throw NumericalError("SCC " + reason + " (charge tolerance " +
-                         std::to_string(scc_.chargeTolerance) + " e, energy tolerance " +
-                         std::to_string(scc_.energyTolerance) + " Ha); history:\n" +
+    throw NumericalError(fmt("SCC %s (charge tolerance %.1e e, energy tolerance %.1e Ha, "
+                             "mixer %s, mixing %g); history:\n",
+                             reason.c_str(), scc_.chargeTolerance, scc_.energyTolerance,
+                             scc_.mixer.c_str(), scc_.mixing) +
                          historyTable(energies, residuals));
 
   out.energy = energy;

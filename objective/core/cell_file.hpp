@@ -37,6 +37,19 @@ struct DispersionInput {
   double ewaldTolerance = 1e-8;      // relative, with summation = "ewald"
 };
 
+// [scc]: self-consistent charges (dftb/scc_term.hpp); defaults as documented in
+// docs/cell-file.md.
+struct SccInput {
+  bool enabled = false;
+  double chargeTolerance = 1e-8;  // electrons
+  double energyTolerance = 1e-8;  // Hartree per cell
+  int maxIterations = 100;
+  std::string mixer = "broyden";  // broyden | simple
+  double mixing = 0.2;
+  double ewaldTolerance = 1e-10;
+  bool stopIfUnconverged = true;
+};
+
 struct TaskInput {
   std::string type = "energy";    // energy | forces | relax
   double forceTolerance = 1e-4;   // Hartree/Bohr (relax)
@@ -56,6 +69,7 @@ struct CellInput {
   std::string parameterSet;
   std::map<std::string, int> maxAngularMomentum;  // optional per species: 0 = s, 1 = p, ...
   DispersionInput dispersion;
+  SccInput scc;
   TaskInput task;
 };
 

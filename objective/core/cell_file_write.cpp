@@ -100,6 +100,14 @@ void writeCellFile(const std::string& path, const CellInput& in) {
                        real(d.cutoff * units::kBohrInAngstrom));
   if (d.model == "lj" && d.summation == "ewald")
     out << fmt::format("summation = \"ewald\"\newald_tolerance = {}\n", real(d.ewaldTolerance));
+  const SccInput& sc = in.scc;
+  if (sc.enabled)
+    out << fmt::format(
+        "\n[scc]\nenabled = true\ncharge_tolerance = {}  # e\nenergy_tolerance = {}  # Ha\n"
+        "max_iterations = {}\nmixer = {}\nmixing = {}\newald_tolerance = {}\n"
+        "stop_if_unconverged = {}\n",
+        real(sc.chargeTolerance), real(sc.energyTolerance), sc.maxIterations, quoted(sc.mixer),
+        real(sc.mixing), real(sc.ewaldTolerance), sc.stopIfUnconverged);
   const TaskInput& t = in.task;
   out << "\n[task]\ntype = " << quoted(t.type) << "\n";
   if (t.type == "relax")

@@ -65,3 +65,36 @@ inline objective::ObjectiveCell explicitCopies(const objective::ObjectiveCell& c
 }
 
 }  // namespace mesochain::testing
+
+namespace mesochain::testing {
+
+// A helical (CH)_x chain: one CH unit, screw T = 1.15 A, gamma = 150 deg (12 units per two
+// turns), C at 0.45 A from the axis (C-C 1.44 A, C...C 2.34 A), H 1.09 A further out;
+// slightly distorted so that no force vanishes by symmetry.
+inline objective::ObjectiveCell helicalChUnit() {
+  const double a = 1.0 / 0.529177249;
+  objective::ObjectiveCell cell;
+  cell.symmetry = objective::Symmetry::screw(1.15 * a, 150.0 * units::kDegree, 1);
+  cell.addAtom("C", {0.45 * a, 0.02 * a, 0.0});
+  cell.addAtom("H", {1.54 * a, -0.03 * a, 0.04 * a});
+  return cell;
+}
+
+// The translational supercell of a screw cell whose twist is 2 pi m / M: M units, T' = M T,
+// gamma' = 0.
+inline objective::ObjectiveCell translationalSupercell(const objective::ObjectiveCell& cell,
+                                                        int units) {
+  objective::ObjectiveCell out;
+  out.symmetry = objective::Symmetry::screw(units * cell.symmetry.translation(), 0.0, 1);
+  for (const auto& s : cell.speciesNames) out.speciesNames.push_back(s);
+  for (long z = 0; z < units; ++z)
+    for (int a = 0; a < cell.atomCount(); ++a) {
+      out.species.push_back(cell.species[a]);
+      out.positions.conservativeResize(3, out.positions.cols() + 1);
+      out.positions.col(out.positions.cols() - 1) =
+          cell.symmetry.apply(objective::GroupElement{z, 0}, cell.positions.col(a));
+    }
+  return out;
+}
+
+}  // namespace mesochain::testing

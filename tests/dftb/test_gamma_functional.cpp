@@ -87,3 +87,54 @@ TEST(GammaFunctional, ScrewCellNeedsEwald) {
   cell.addAtom("C", {1.0, 0.0, 0.0});
   EXPECT_THROW(DirectRingCoulombSum().matrix(cell), InputError);
 }
+
+namespace {
+// Weighted sum 1/2 sum_ij w_ij M_ij of a lattice sum's matrix.
+template <class Sum>
+double weighted(const Sum& sum, const objective::ObjectiveCell& cell, const Eigen::MatrixXd& w) {
+  return 0.5 * w.cwiseProduct(sum.matrix(cell)).sum();
+}
+
+template <class Sum>
+void expectDerivativesMatch(const Sum& sum, const objective::ObjectiveCell& cell, double tol) {
+  Eigen::VectorXd q(cell.atomCount());
+  for (int a = 0; a < cell.atomCount(); ++a) q[a] = 0.3 * std::sin(1.3 * a + 0.2);
+  const Eigen::MatrixXd w = q * q.transpose();
+  const LatticeSumDerivatives d = sum.derivatives(cell, w);
+  const double h = 1e-5;
+  for (int a = 0; a < cell.atomCount(); ++a)
+    for (int k = 0; k < 3; ++k) {
+      auto p = cell, m = cell;
+      p.positions(k, a) += h;
+      m.positions(k, a) -= h;
+      EXPECT_NEAR(d.gradient(k, a), (weighted(sum, p, w) - weighted(sum, m, w)) / (2 * h), tol)
+          << a << " " << k;
+    }
+  if (cell.symmetry.isRing()) return;
+  const auto& s = cell.symmetry;
+  auto tp = cell, tm = cell, gp = cell, gm = cell;
+  tp.symmetry = s.withTranslation(s.translation() + h);
+  tm.symmetry = s.withTranslation(s.translation() - h);
+  gp.symmetry = s.withTwist(s.twist() + h);
+  gm.symmetry = s.withTwist(s.twist() - h);
+  EXPECT_NEAR(d.dTranslation, (weighted(sum, tp, w) - weighted(sum, tm, w)) / (2 * h), tol);
+  EXPECT_NEAR(d.dTwist, (weighted(sum, gp, w) - weighted(sum, gm, w)) / (2 * h), tol);
+}
+}  // namespace
+
+TEST(GammaFunctional, ShortRangeDerivativesOnAScrewCell) {
+  // A twisted CH chain with a C_2 axis: positions, T and gamma against finite differences.
+  objective::ObjectiveCell cell;
+  cell.symmetry = objective::Symmetry::screw(2.6, 0.45, 2);
+  cell.addAtom("C", {1.1, 0.2, 0.1});
+  cell.addAtom("H", {2.9, -0.3, 0.7});
+  const ShortRangeGammaSum sr({0.3647, 0.4195}, 1e-12);
+  expectDerivativesMatch(sr, cell, 1e-8);
+}
+
+TEST(GammaFunctional, RingCoulombAndShortRangeDerivatives) {
+  auto unit = mesochain::testing::benzeneUnit();
+  unit.positions(2, 1) += 0.2;
+  expectDerivativesMatch(DirectRingCoulombSum(), unit, 1e-8);
+  expectDerivativesMatch(ShortRangeGammaSum({0.3647, 0.4195}, 1e-12), unit, 1e-8);
+}

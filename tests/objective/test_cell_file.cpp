@@ -54,6 +54,14 @@ void expectSameInput(const CellInput& a, const CellInput& b) {
   EXPECT_NEAR(a.dispersion.epsilon, b.dispersion.epsilon, 1e-15);
   EXPECT_NEAR(a.dispersion.r0, b.dispersion.r0, 1e-12);
   EXPECT_NEAR(a.dispersion.cutoff, b.dispersion.cutoff, 1e-12);
+  EXPECT_EQ(a.scc.enabled, b.scc.enabled);
+  EXPECT_EQ(a.scc.chargeTolerance, b.scc.chargeTolerance);
+  EXPECT_EQ(a.scc.energyTolerance, b.scc.energyTolerance);
+  EXPECT_EQ(a.scc.maxIterations, b.scc.maxIterations);
+  EXPECT_EQ(a.scc.mixer, b.scc.mixer);
+  EXPECT_EQ(a.scc.mixing, b.scc.mixing);
+  EXPECT_EQ(a.scc.ewaldTolerance, b.scc.ewaldTolerance);
+  EXPECT_EQ(a.scc.stopIfUnconverged, b.scc.stopIfUnconverged);
   EXPECT_EQ(a.task.type, b.task.type);
   EXPECT_EQ(a.task.forceTolerance, b.task.forceTolerance);
   EXPECT_EQ(a.task.maxSteps, b.task.maxSteps);
@@ -107,6 +115,24 @@ TEST(CellFile, ReadsTheExamples) {
   CellInput same = in;
   same.source = gen.source;
   expectSameInput(gen, same);
+}
+
+TEST(CellFile, ReadsSccAndWritesItBack) {
+  const CellInput in = readCellFile(kSource + "/examples/benzene_scc.toml");
+  EXPECT_TRUE(in.scc.enabled);
+  EXPECT_DOUBLE_EQ(in.scc.chargeTolerance, 1e-9);
+  EXPECT_DOUBLE_EQ(in.scc.energyTolerance, 1e-8);  // default
+  EXPECT_EQ(in.scc.maxIterations, 100);
+  EXPECT_EQ(in.scc.mixer, "broyden");
+  EXPECT_DOUBLE_EQ(in.scc.mixing, 0.2);
+  EXPECT_TRUE(in.scc.stopIfUnconverged);
+  EXPECT_EQ(in.parameterFiles.size(), 4u);
+  const fs::path dir = scratch();
+  writeCellFile((dir / "again.toml").string(), in);
+  CellInput back = readCellFile((dir / "again.toml").string());
+  back.source = in.source;
+  expectSameInput(in, back);
+  fs::remove_all(dir);
 }
 
 TEST(CellFile, ReadsInlineAtomsExplicitTablesAndDispersion) {
@@ -278,6 +304,12 @@ set = "pbc-0-3"
        kBase + "[task]\ntype = \"energy\"\nmax_steps = 3\n",
        {"task.max_steps (line 17)"}},
       {"bad task", kBase + "[task]\ntype = \"md\"\n", {"task.type (line 16)"}},
+      {"scc unknown key", kBase + "[scc]\nenabled = true\nmix = 0.1\n", {"scc.mix"}},
+      {"scc mixer", kBase + "[scc]\nmixer = \"anderson\"\n", {"scc.mixer (line 16)"}},
+      {"scc tolerance beyond double precision",
+       kBase + "[scc]\ncharge_tolerance = 1e-16\n",
+       {"scc.charge_tolerance (line 16)", "1e-13"}},
+      {"scc mixing", kBase + "[scc]\nmixing = 1.5\n", {"scc.mixing (line 16)"}},
       {"negative tolerance",
        kBase + "[task]\ntype = \"relax\"\nforce_tolerance = -1\n",
        {"task.force_tolerance (line 17)"}},
