@@ -56,6 +56,8 @@ class VdwContactEffect : public Effect {
   static double interactionRange(const Scene& scene);
   const TubePairPotential& potential(int typeA, int typeB) const;
   double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
+  double neighbourSeconds() const { return nb_->seconds; }
+  long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
 
  private:
   ContactPairResult pair(const Bodies& b, int i, int j) const;
