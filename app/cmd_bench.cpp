@@ -14,14 +14,15 @@ Command makeBenchKpointsCommand();
 Command makeBenchDemCommand();
 Command makeBenchEwaldCommand();
 Command makeBenchSccCommand();
+Command makeBenchNetworkCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(
       std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-                           makeBenchEwaldCommand(), makeBenchSccCommand()});
+                           makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
-    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc");
+    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

@@ -23,14 +23,16 @@ struct Energies {
   double kineticRotational = 0.0;
   BondEnergy bonds;
   double loadPotential = 0.0;  // -F.u - M.theta of fixed-direction loads (0 for others)
+  double vdw = 0.0;            // van der Waals contacts between elements (mdem/contacts)
 
-  double potential() const { return bonds.total() + loadPotential; }
+  double potential() const { return bonds.total() + loadPotential + vdw; }
   double total() const { return kineticTranslational + kineticRotational + potential(); }
   Energies& operator+=(const Energies& o) {
     kineticTranslational += o.kineticTranslational;
     kineticRotational += o.kineticRotational;
     bonds += o.bonds;
     loadPotential += o.loadPotential;
+    vdw += o.vdw;
     return *this;
   }
 };

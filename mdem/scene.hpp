@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mdem/boundary.hpp"
+#include "mdem/contacts/contact_spec.hpp"
 #include "mdem/parallel_bond.hpp"
 
 namespace mesochain::mdem {
@@ -49,10 +50,12 @@ struct Scene {
   std::vector<BondType> bondTypes;
   Bodies bodies;
   std::vector<Bond> bonds;
-  std::vector<std::string> effects;   // "bonds", "local_damping", "viscous_damping"
+  std::vector<std::string> effects;   // "bonds", "vdw_contact", "contact_damping", "local_damping", "viscous_damping"
   double localDampingAlpha = 0.7;
   double viscousRate = 0.0;           // 1/ns
   Boundary boundary;
+  Periodicity periodic;               // used by contacts (positions are never wrapped)
+  ContactSpec contacts;               // parameters of vdw_contact / contact_damping
   RunControl run;
   OutputSpec output;
 };

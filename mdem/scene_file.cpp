@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "mdem/contacts/contact_file.hpp"
 #include "mdem/toml_reader.hpp"
 #include "mdem/units.hpp"
 
@@ -268,7 +269,8 @@ Scene loadScene(const std::string& path) {
   const TomlTable root(data, path, "");
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
-                  "viscous_damping", "run", "output"});
+                  "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
+                  "periodic"});
   if (root.integer("format") != 1)
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
@@ -309,6 +311,7 @@ Scene loadScene(const std::string& path) {
     if (!root.has(e) && named && std::string(e) == "viscous_damping")
       root.fail(e, "nothing", "a [viscous_damping] table with rate_per_ns");
   }
+  readContactTables(root, s);
   readRunAndOutput(root, s);
   if (s.bodies.size() == 0)
     throw InputError(path, "keys elements / filaments", "no elements", "at least one element");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/contacts/contact_effects.hpp"
 #include "mdem/damping.hpp"
 #include "mdem/integrator.hpp"
 
@@ -22,17 +23,22 @@ Simulation::Simulation(const Scene& scene)
       kinematics_(scene.boundary, scene.bodies.size()),
       h_(scene.run.timeStep) {
   for (const std::string& e : scene.effects)
-    if (e != "bonds" && e != "local_damping" && e != "viscous_damping")
+    if (e != "bonds" && e != "local_damping" && e != "viscous_damping" && e != "vdw_contact" &&
+        e != "contact_damping")
       throw InputError(scene.source, "key effects", "\"" + e + "\"",
-                       "one of \"bonds\", \"local_damping\", \"viscous_damping\"");
+                       "one of \"bonds\", \"vdw_contact\", \"contact_damping\", "
+                       "\"local_damping\", \"viscous_damping\"");
   // Fixed build order: conservative effects, loads, then dissipation.
   if (named(scene.effects, "bonds")) {
     auto b = std::make_unique<BondEffect>(scene.bonds, scene.bodies.size());
     bondEffect_ = b.get();
     effects_.push_back(std::move(b));
   }
+  ContactEffects contacts = makeContactEffects(scene);  // only those named
+  if (contacts.vdw) effects_.push_back(std::move(contacts.vdw));
   if (!scene.boundary.loads.empty())
     effects_.push_back(std::make_unique<LoadEffect>(scene.boundary.loads, scene.bodies));
+  if (contacts.damping) effects_.push_back(std::move(contacts.damping));
   if (named(scene.effects, "local_damping"))
     effects_.push_back(std::make_unique<LocalDamping>(scene.localDampingAlpha));
   if (named(scene.effects, "viscous_damping"))
@@ -99,6 +105,12 @@ std::vector<std::string> Simulation::effectNames() const {
   std::vector<std::string> n;
   for (const auto& e : effects_) n.push_back(e->name());
   return n;
+}
+
+Effect* Simulation::effect(const std::string& name) const {
+  for (const auto& e : effects_)
+    if (e->name() == name) return e.get();
+  return nullptr;
 }
 
 const std::vector<Bond>& Simulation::bonds() const {

@@ -3,8 +3,9 @@
 // the critical one, and advances the state. One step (velocity Verlet + DLM rotation,
 // integrator.hpp):
 //   kick(h/2); constraints(t + h/2); drift(h); t += h; forces; kick(h/2); constraints(t).
-// Forces: every effect in order bonds -> loads -> local_damping -> viscous_damping (the
-// damping effects act on the accumulated force), then constrained components are cleared.
+// Forces: every effect in order bonds -> vdw_contact -> loads -> contact_damping ->
+// local_damping -> viscous_damping (the last two act on the accumulated force), then
+// constrained components are cleared.
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ class Simulation {
   long stepCount() const { return steps_; }
   const StabilityLimit& stability() const { return limit_; }
   std::vector<std::string> effectNames() const;
+  // The built effect of that name, or nullptr (e.g. dynamic_cast to VdwContactEffect).
+  Effect* effect(const std::string& name) const;
   // The bonds with their tracked state (empty when "bonds" is not an effect).
   const std::vector<Bond>& bonds() const;
   const BondEffect* bondEffect() const { return bondEffect_; }

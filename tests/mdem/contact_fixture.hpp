@@ -72,3 +72,35 @@ inline double surfaceReferenceEnergy(const Segment& a, const Segment& b, double 
 }
 
 }  // namespace mesochain::mdem::testing
+
+#include "mdem/scene.hpp"
+#include "mdem/simulation.hpp"
+
+namespace mesochain::mdem::testing {
+
+// A scene with one (10,10)-like cylinder element type (325 carbon atoms per 2 nm element), one
+// bond type (Y = 1 TPa, G = 0.4 TPa) and the carbon vdW contact parameters; no elements yet.
+inline Scene tubeScene(std::vector<std::string> effects) {
+  Scene s;
+  ElementType t;
+  t.name = "cnt1010";
+  t.shape = Shape::Cylinder;
+  t.radius = kTubeRadius, t.length = kSegmentLength, t.mass = 325 * 1.9945e-5;
+  s.elementTypes.push_back(t);
+  BondType b;
+  b.name = "cnt", b.fromModuli = true, b.youngModulus = 1e6, b.shearModulus = 0.4e6;
+  s.bondTypes.push_back(b);
+  s.contacts.vdw.lj = carbonLj();
+  s.contacts.vdw.switchGap = 0.8, s.contacts.vdw.cutoffGap = 1.2;
+  s.effects = std::move(effects);
+  return s;
+}
+
+// A straight tube of `count` elements from `start` along `direction`; returns the first index.
+inline int addTube(Scene& s, int count, const Vec3& start, const Vec3& direction) {
+  FilamentSpec f;
+  f.count = count, f.start = start, f.direction = direction;
+  return addFilament(s, f);
+}
+
+}  // namespace mesochain::mdem::testing

@@ -1,0 +1,204 @@
+#include "mdem/contacts/contact_effects.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "mdem/contacts/contact_file.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+bool named(const Scene& s, const char* name) {
+  return std::find(s.effects.begin(), s.effects.end(), name) != s.effects.end();
+}
+
+double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
+
+double maxHalfLength(const Scene& s) {
+  double l = 0.0;
+  for (const ElementType& t : s.elementTypes) l = std::max(l, 0.5 * t.length);
+  return l;
+}
+double maxRadius(const Scene& s) {
+  double r = 0.0;
+  for (const ElementType& t : s.elementTypes) r = std::max(r, effectiveRadius(t));
+  return r;
+}
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Gathers per-pair results into the element forces in a fixed order.
+void gather(const NeighbourList& list, const std::vector<ContactPairResult>& results, Bodies& s) {
+  const std::vector<int>& start = list.incidentStart();
+  const std::vector<int>& inc = list.incident();
+#pragma omp parallel for schedule(static) if (s.size() > 1024)
+  for (int i = 0; i < s.size(); ++i) {
+    Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+    for (int e = start[i]; e < start[i + 1]; ++e) {
+      const ContactPairResult& r = results[inc[e] >> 1];
+      if (inc[e] & 1) {
+        f += r.forceB, t += r.torqueB;
+      } else {
+        f += r.forceA, t += r.torqueA;
+      }
+    }
+    s.force[i] += f;
+    s.torque[i] += t;
+  }
+}
+}  // namespace
+
+ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range)
+    : periodicity_(scene.periodic),
+      topology_(buildTopology(scene.bodies.size(), scene.bonds, scene.contacts.excludeWithin,
+                              scene.contacts.closedFilaments)),
+      list_(range, scene.contacts.skin, scene.periodic) {
+  for (const ElementType& t : scene.elementTypes) {
+    halfLength_.push_back(0.5 * t.length);
+    radius_.push_back(effectiveRadius(t));
+  }
+  for (int k = 0; k < 3; ++k)
+    if (scene.periodic.periodic[k] && scene.periodic.length[k] <= 2.0 * list_.listRange())
+      throw InputError(scene.source, "key periodic.length_nm",
+                       fmt::format("{:.4g} nm along {}", scene.periodic.length[k], "xyz"[k]),
+                       fmt::format("more than twice the neighbour-list range {:.4g} nm (contact "
+                                   "range + element length + skin), for the minimum image",
+                                   list_.listRange()));
+  update(scene.bodies);
+}
+
+VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb)
+    : spec_(scene.contacts.vdw), rule_(gaussLegendre(scene.contacts.vdw.quadraturePoints)),
+      typeCount_(static_cast<int>(scene.elementTypes.size())), types_(typeCount_ * typeCount_), nb_(std::move(nb)) {
+  std::vector<char> used(typeCount_, 0);
+  for (int t : scene.bodies.type) used[t] = 1;
+  for (int a = 0; a < typeCount_; ++a) {
+    if (!used[a]) continue;
+    const ElementType& ta = scene.elementTypes[a];
+    if (ta.shape != Shape::Cylinder)
+      throw InputError(scene.source, "key effects",
+                       fmt::format("\"vdw_contact\" with elements of brick type \"{}\"", ta.name),
+                       "cylinder elements (the face-to-face contact of bricks is not implemented)");
+    for (int b = a; b < typeCount_; ++b) {
+      if (!used[b]) continue;
+      const ElementType& tb = scene.elementTypes[b];
+      TubePairSpec ps;
+      ps.lj = spec_.lj, ps.radiusA = ta.radius, ps.radiusB = tb.radius;
+      ps.switchGap = spec_.switchGap, ps.cutoffGap = spec_.cutoffGap;
+      TypePair& tp = types_[a * typeCount_ + b];
+      tp.potential = std::make_unique<TubePairPotential>(ps);
+      if (!spec_.anisotropic) tp.isotropic = std::make_unique<IsotropicVdw>(*tp.potential, 0.5 * ta.length, 0.5 * tb.length);
+    }
+  }
+}
+
+double VdwContactEffect::interactionRange(const Scene& s) {
+  return 2.0 * maxRadius(s) + s.contacts.vdw.cutoffGap + 2.0 * maxHalfLength(s);
+}
+
+const TubePairPotential& VdwContactEffect::potential(int a, int b) const {
+  return *types_[std::min(a, b) * typeCount_ + std::max(a, b)].potential;
+}
+
+ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
+  const TypePair& tp = types_[std::min(b.type[i], b.type[j]) * typeCount_ + std::max(b.type[i], b.type[j])];
+  // Quadrature side: the element of the lower filament (then the lower index), so that a tube
+  // sliding along another is always integrated the same way (no corrugation).
+  const FilamentTopology& topo = nb_->topology();
+  const bool iOuter = topo.filament[i] != topo.filament[j] ? topo.filament[i] < topo.filament[j] : i < j;
+  const int o = iOuter ? i : j, in = iOuter ? j : i;
+  const Segment so = nb_->segment(b, o), si = nb_->imageNear(b, in, so.centre);
+  ContactPairResult r = tp.isotropic ? tp.isotropic->evaluate(so.centre, si.centre)
+                                     : anisotropicVdw(*tp.potential, rule_, so, si);
+  if (!iOuter) std::swap(r.forceA, r.forceB), std::swap(r.torqueA, r.torqueB);
+  return r;
+}
+
+void VdwContactEffect::addForces(State& state) {
+  Bodies& s = state.bodies;
+  double t0 = now();
+  nb_->update(s);
+  double t1 = now();
+  nb_->seconds += t1 - t0;
+  const auto& pairs = nb_->list().pairs();
+  const int np = static_cast<int>(pairs.size());
+  results_.resize(np);
+#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
+  for (int p = 0; p < np; ++p) results_[p] = pair(s, pairs[p].first, pairs[p].second);
+  gather(nb_->list(), results_, s);
+  seconds += now() - t1;
+}
+
+Energies VdwContactEffect::energy(const State& state) const {
+  const Bodies& s = state.bodies;
+  const auto& pairs = nb_->list().pairs();
+  const int np = static_cast<int>(pairs.size());
+  double e = 0.0;
+#pragma omp parallel for reduction(+ : e) schedule(dynamic, 256) if (np > 256)
+  for (int p = 0; p < np; ++p) e += pair(s, pairs[p].first, pairs[p].second).energy;
+  Energies out;
+  out.vdw = e;
+  return out;
+}
+
+ContactDampingEffect::ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb)
+    : spec_(scene.contacts.damping), nb_(std::move(nb)) {}
+
+double ContactDampingEffect::interactionRange(const Scene& s) {
+  return 2.0 * maxRadius(s) + s.contacts.damping.cutoffGap + 2.0 * maxHalfLength(s);
+}
+
+void ContactDampingEffect::addForces(State& state) {
+  Bodies& s = state.bodies;
+  double t0 = now();
+  nb_->update(s);
+  nb_->seconds += now() - t0;
+  const auto& pairs = nb_->list().pairs();
+  const int np = static_cast<int>(pairs.size());
+  results_.resize(np);
+#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
+  for (int p = 0; p < np; ++p) {
+    const int i = pairs[p].first, j = pairs[p].second;
+    const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
+    results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]), s.velocity[i],
+                                 s.angularVelocityWorld(i), s.velocity[j], s.angularVelocityWorld(j));
+  }
+  gather(nb_->list(), results_, s);
+}
+
+ContactEffects makeContactEffects(const Scene& scene) {
+  ContactEffects c;
+  const bool vdw = named(scene, "vdw_contact"), damping = named(scene, "contact_damping");
+  if (!vdw && !damping) return c;
+  validateContactSpec(scene);
+  double range = 0.0;
+  if (vdw) range = std::max(range, VdwContactEffect::interactionRange(scene));
+  if (damping) range = std::max(range, ContactDampingEffect::interactionRange(scene));
+  c.neighbourhood = std::make_shared<ContactNeighbourhood>(scene, range);
+  if (vdw) c.vdw = std::make_unique<VdwContactEffect>(scene, c.neighbourhood);
+  if (damping) c.damping = std::make_unique<ContactDampingEffect>(scene, c.neighbourhood);
+  return c;
+}
+
+ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle) {
+  ContactCount c;
+  const double cosMax = std::cos(maxAngle);
+  for (const auto& [i, j] : nb.list().pairs()) {
+    const Segment a = nb.segment(b, i), s = nb.imageNear(b, j, a.centre);
+    double sa, sb;
+    closestPoints(a, s, &sa, &sb);
+    const double gap = (a.centre + sa * a.axis - s.centre - sb * s.axis).norm() - nb.radius(b.type[i]) - nb.radius(b.type[j]);
+    if (gap > maxGap) continue;
+    ++c.inContact;
+    if (std::abs(a.axis.dot(s.axis)) >= cosMax) ++c.aligned;
+  }
+  return c;
+}
+
+}  // namespace mesochain::mdem

@@ -1,0 +1,106 @@
+#pragma once
+// Contacts as effects: "vdw_contact" (conservative, energy reported as Energies::vdw) and
+// "contact_damping" (dashpots). Either one builds a shared neighbourhood (filament topology and
+// neighbour list); a scene naming neither builds nothing (no list, no loop).
+//
+// Kernels run in parallel over the pairs into a per-pair buffer; each element then gathers its
+// pairs' contributions in a fixed order, so results do not depend on the number of threads.
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/neighbour_list.hpp"
+#include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/effect.hpp"
+#include "mdem/scene.hpp"
+
+namespace mesochain::mdem {
+
+class ContactNeighbourhood {
+ public:
+  ContactNeighbourhood(const Scene& scene, double interactionRange);
+  // Refreshes the list when needed; cheap otherwise.
+  void update(const Bodies& b) { list_.update(b, halfLength_, topology_); }
+  const NeighbourList& list() const { return list_; }
+  const FilamentTopology& topology() const { return topology_; }
+  const Periodicity& periodicity() const { return periodicity_; }
+  double radius(int type) const { return radius_[type]; }
+  Segment segment(const Bodies& b, int i) const {
+    return {b.position[i], rotate(b.orientation[i], Vec3::UnitZ()), halfLength_[b.type[i]]};
+  }
+  // Segment of j placed at the minimum image next to `near`.
+  Segment imageNear(const Bodies& b, int j, const Vec3& near) const {
+    Segment s = segment(b, j);
+    s.centre = near + periodicity_.minimumImage(s.centre - near);
+    return s;
+  }
+  // Accumulated seconds spent rebuilding and checking the list (for benchmarks).
+  double seconds = 0.0;
+
+ private:
+  Periodicity periodicity_;
+  std::vector<double> halfLength_, radius_;  // per element type
+  FilamentTopology topology_;
+  NeighbourList list_;
+};
+
+class VdwContactEffect : public Effect {
+ public:
+  VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
+  std::string name() const override { return "vdw_contact"; }
+  void addForces(State& state) override;
+  Energies energy(const State& state) const override;
+  // Largest centre distance at which two elements of the scene interact.
+  static double interactionRange(const Scene& scene);
+  const TubePairPotential& potential(int typeA, int typeB) const;
+  double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
+  double neighbourSeconds() const { return nb_->seconds; }
+  long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
+
+ private:
+  ContactPairResult pair(const Bodies& b, int i, int j) const;
+  struct TypePair {
+    std::unique_ptr<TubePairPotential> potential;
+    std::unique_ptr<IsotropicVdw> isotropic;
+  };
+  VdwContactSpec spec_;
+  QuadratureRule rule_;
+  int typeCount_ = 0;
+  std::vector<TypePair> types_;  // typeCount^2, symmetric, shared pointers by (min, max)
+  std::shared_ptr<ContactNeighbourhood> nb_;
+  std::vector<ContactPairResult> results_;
+};
+
+class ContactDampingEffect : public Effect {
+ public:
+  ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
+  std::string name() const override { return "contact_damping"; }
+  void addForces(State& state) override;
+  Energies energy(const State&) const override { return {}; }
+  static double interactionRange(const Scene& scene);
+
+ private:
+  ContactDampingSpec spec_;
+  std::shared_ptr<ContactNeighbourhood> nb_;
+  std::vector<ContactPairResult> results_;
+};
+
+// The contact effects named by the scene (null when not named).
+struct ContactEffects {
+  std::unique_ptr<VdwContactEffect> vdw;
+  std::unique_ptr<ContactDampingEffect> damping;
+  std::shared_ptr<ContactNeighbourhood> neighbourhood;
+};
+ContactEffects makeContactEffects(const Scene& scene);
+
+// Pairs in van der Waals contact (wall gap of the closest points below maxGap) whose axes make
+// an angle below maxAngle (either direction): the "aligned pairs" of the tensile analysis.
+struct ContactCount {
+  int inContact = 0;
+  int aligned = 0;
+};
+ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle);
+
+}  // namespace mesochain::mdem

@@ -1,0 +1,100 @@
+#include "mdem/contacts/contact_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "mdem/units.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+bool listed(const Scene& s, const char* e) {
+  return std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end();
+}
+void requireRange(const Scene& s, const char* key, double v, double lo, double hi, const char* unit) {
+  if (!(v >= lo && v <= hi))
+    throw InputError(s.source, fmt::format("key {}", key), fmt::format("{:.6g} {}", v, unit),
+                     fmt::format("a value in [{:.6g}, {:.6g}] {}", lo, hi, unit));
+}
+}  // namespace
+
+void validateContactSpec(const Scene& s) {
+  const ContactSpec& c = s.contacts;
+  if (listed(s, "vdw_contact")) {
+    const VdwContactSpec& v = c.vdw;
+    requireRange(s, "vdw_contact.epsilon_meV", v.lj.epsilon / units::kElectronvolt * 1e3, 1e-3, 100.0, "meV");
+    requireRange(s, "vdw_contact.sigma_nm", v.lj.sigma, 0.1, 1.0, "nm");
+    requireRange(s, "vdw_contact.surface_density_per_nm2", v.lj.surfaceDensity, 1.0, 100.0, "atoms/nm^2");
+    // The well (LJ minimum at 2^(1/6) sigma) must lie below the switch.
+    requireRange(s, "vdw_contact.switch_gap_nm", v.switchGap, 1.5 * v.lj.sigma, 5.0, "nm");
+    requireRange(s, "vdw_contact.cutoff_gap_nm", v.cutoffGap, v.switchGap + 0.05, 6.0, "nm");
+    requireRange(s, "vdw_contact.quadrature_points", v.quadraturePoints, 2, 64, "");
+  }
+  if (listed(s, "contact_damping")) {
+    const ContactDampingSpec& d = c.damping;
+    requireRange(s, "contact_damping.translational_pN_ns_per_nm2", d.translational, 0.0, 1e12, "pN ns/nm^2");
+    requireRange(s, "contact_damping.rotational_pN_ns", d.rotational, 0.0, 1e12, "pN ns");
+    requireRange(s, "contact_damping.full_gap_nm", d.fullGap, 0.0, 5.0, "nm");
+    requireRange(s, "contact_damping.cutoff_gap_nm", d.cutoffGap, d.fullGap + 0.01, 6.0, "nm");
+  }
+  requireRange(s, "contacts.exclude_within_elements", c.excludeWithin, 1, 1000, "");
+  requireRange(s, "contacts.skin_nm", c.skin, 1e-3, 10.0, "nm");
+  for (int k = 0; k < 3; ++k)
+    if (s.periodic.periodic[k]) requireRange(s, "periodic.length_nm", s.periodic.length[k], 1e-3, 1e9, "nm");
+}
+
+void readContactTables(const TomlTable& root, Scene& s) {
+  for (const char* e : {"vdw_contact", "contact_damping"}) {
+    if (root.has(e) && !listed(s, e))
+      root.fail(e, "parameters for an effect that is not listed", "\"" + std::string(e) + "\" in effects");
+    if (!root.has(e) && listed(s, e))
+      root.fail(e, "nothing", fmt::format("a [{}] table (docs/mdem-contacts.md)", e));
+  }
+  if (root.has("vdw_contact")) {
+    const TomlTable t = root.table("vdw_contact");
+    t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
+                 "cutoff_gap_nm", "quadrature_points"});
+    VdwContactSpec& v = s.contacts.vdw;
+    const std::string form = t.string("form", "anisotropic");
+    if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
+    v.anisotropic = form == "anisotropic";
+    v.lj.epsilon = t.positive("epsilon_meV") * 1e-3 * units::kElectronvolt;
+    v.lj.sigma = t.positive("sigma_nm");
+    v.lj.surfaceDensity = t.positive("surface_density_per_nm2");
+    v.switchGap = t.number("switch_gap_nm", v.switchGap);
+    v.cutoffGap = t.number("cutoff_gap_nm", v.cutoffGap);
+    v.quadraturePoints = static_cast<int>(t.integer("quadrature_points", v.quadraturePoints));
+  }
+  if (root.has("contact_damping")) {
+    const TomlTable t = root.table("contact_damping");
+    t.allowOnly({"translational_pN_ns_per_nm2", "rotational_pN_ns", "full_gap_nm", "cutoff_gap_nm"});
+    ContactDampingSpec& d = s.contacts.damping;
+    d.translational = t.nonNegative("translational_pN_ns_per_nm2", -1.0);
+    if (d.translational < 0.0) t.fail("translational_pN_ns_per_nm2", "nothing", "a value >= 0");
+    d.rotational = t.nonNegative("rotational_pN_ns", 0.0);
+    d.fullGap = t.number("full_gap_nm", d.fullGap);
+    d.cutoffGap = t.number("cutoff_gap_nm", d.cutoffGap);
+  }
+  if (root.has("contacts")) {
+    const TomlTable t = root.table("contacts");
+    t.allowOnly({"exclude_within_elements", "skin_nm"});
+    s.contacts.excludeWithin = static_cast<int>(t.integer("exclude_within_elements", s.contacts.excludeWithin));
+    s.contacts.skin = t.number("skin_nm", s.contacts.skin);
+  }
+  if (root.has("periodic")) {
+    const TomlTable t = root.table("periodic");
+    t.allowOnly({"length_nm"});
+    const Vec3 l = t.vec3("length_nm");
+    for (int k = 0; k < 3; ++k) {
+      if (l[k] < 0.0) t.fail("length_nm", fmt::format("{} along {}", l[k], "xyz"[k]), "0 (not periodic) or a positive box length");
+      s.periodic.periodic[k] = l[k] > 0.0;
+      s.periodic.length[k] = l[k];
+    }
+  }
+  validateContactSpec(s);
+}
+
+}  // namespace mesochain::mdem

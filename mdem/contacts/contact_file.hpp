@@ -1,0 +1,16 @@
+#pragma once
+// Scene-file tables of the contacts (docs/scene-file.md, docs/mdem-contacts.md):
+// [vdw_contact], [contact_damping], [contacts] (neighbour search), [periodic].
+#include "mdem/scene.hpp"
+#include "mdem/toml_reader.hpp"
+
+namespace mesochain::mdem {
+
+// Reads the tables present; checks ranges; fails when an effect's table is present but the
+// effect is not listed (or vdw_contact is listed without its table).
+void readContactTables(const TomlTable& root, Scene& s);
+
+// Range checks shared with scenes built in C++ (throws InputError naming `source` and the key).
+void validateContactSpec(const Scene& s);
+
+}  // namespace mesochain::mdem

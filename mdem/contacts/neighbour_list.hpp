@@ -1,0 +1,63 @@
+#pragma once
+// Neighbour search for contacts between elements: cell lists with a Verlet skin, periodic
+// boundaries on any axis (minimum image), and exclusion of near neighbours along one filament.
+//
+// Filaments are the connected components of the bond graph; an element's place along its
+// filament is its rank by index within the component (elements of a generated filament are
+// numbered along it). Two elements of one filament whose places differ by at most
+// `excludeWithin` (cyclically for a closed filament) never form a contact pair.
+#include <utility>
+#include <vector>
+
+#include "mdem/body.hpp"
+#include "mdem/contacts/contact_spec.hpp"
+#include "mdem/parallel_bond.hpp"
+
+namespace mesochain::mdem {
+
+struct FilamentTopology {
+  std::vector<int> filament;      // per element: filament id (ids ordered by first element)
+  std::vector<int> place;         // per element: rank along its filament
+  std::vector<int> filamentSize;  // per filament
+  std::vector<char> closed;       // per filament
+  int excludeWithin = 0;
+
+  bool excluded(int i, int j) const;
+};
+
+FilamentTopology buildTopology(int elementCount, const std::vector<Bond>& bonds, int excludeWithin,
+                               const std::vector<ClosedFilament>& closedFilaments);
+
+class NeighbourList {
+ public:
+  // `interactionRange`: largest centre distance at which two elements can interact (nm).
+  NeighbourList(double interactionRange, double skin, const Periodicity& periodicity);
+  ~NeighbourList();
+  NeighbourList(const NeighbourList&) = delete;
+  NeighbourList& operator=(const NeighbourList&) = delete;
+
+  // Rebuilds the pair list when an element end has moved by more than skin/2 since the last
+  // build (or on the first call). Returns true when it rebuilt.
+  bool update(const Bodies& bodies, const std::vector<double>& halfLength, const FilamentTopology& topology);
+  // Half list (i < j), sorted, each pair within interactionRange + skin at the last build.
+  const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
+  // For gathering per element: entries [start[i], start[i+1]) of `incident`, each 2*pair + side.
+  const std::vector<int>& incidentStart() const { return start_; }
+  const std::vector<int>& incident() const { return incident_; }
+  long builds() const { return builds_; }
+  double listRange() const { return range_ + skin_; }
+
+  // Number of NeighbourList objects alive (a scene without contacts must build none).
+  static int live();
+
+ private:
+  void build(const Bodies& bodies, const FilamentTopology& topology);
+  double range_, skin_;
+  Periodicity periodicity_;
+  std::vector<std::pair<int, int>> pairs_;
+  std::vector<int> start_, incident_;
+  std::vector<Vec3> builtPosition_, builtAxis_;
+  long builds_ = 0;
+};
+
+}  // namespace mesochain::mdem
