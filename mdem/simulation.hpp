@@ -5,6 +5,8 @@
 //   kick(h/2); constraints(t + h/2); drift(h); t += h; forces; kick(h/2); constraints(t).
 // Forces: every effect in order bonds -> loads -> local_damping -> viscous_damping (the
 // damping effects act on the accumulated force), then constrained components are cleared.
+// When the scene has only these effects, run(n) advances n steps in one OpenMP parallel region
+// (stepper.hpp); other effects add their forces between the two halves of each step.
 #include <string>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "mdem/effect.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/stability.hpp"
+#include "mdem/stepper.hpp"
 
 namespace mesochain::mdem {
 
@@ -21,10 +24,8 @@ class Simulation {
   // positive or exceeds the critical time step.
   explicit Simulation(const Scene& scene);
 
-  void step();
-  void run(long steps) {
-    for (long k = 0; k < steps; ++k) step();
-  }
+  void step() { run(1); }
+  void run(long steps);
 
   // Kinetic energies plus the energies of every effect.
   Energies energies() const;
@@ -51,6 +52,9 @@ class Simulation {
   KinematicMap kinematics_;
   std::vector<EffectPtr> effects_;
   BondEffect* bondEffect_ = nullptr;
+  CoreEffects core_;             // the effects the fused step runs itself
+  std::vector<Effect*> others_;  // effects that add their forces on their own
+  ThreadPartition partition_;    // for the current number of OpenMP threads
   StabilityLimit limit_;
   double h_ = 0.0;
   long steps_ = 0;
