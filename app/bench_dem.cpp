@@ -1,8 +1,11 @@
 // `mesochain bench dem`: element-steps per second of bonded filaments (10^4 and 10^5 elements
 // in total), on 1 thread and on OpenMP threads.
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -19,6 +22,8 @@ struct BenchOptions {
   int filamentLength = 100;
   int threads = 2;
   double seconds = 2.0;
+  long steps = 0;   // > 0: a fixed number of steps per measurement (for callgrind) instead of time
+  int repeats = 3;  // measurements per case; the median is printed
 };
 
 mdem::Scene benchScene(int total, int perFilament) {
@@ -45,18 +50,66 @@ mdem::Scene benchScene(int total, int perFilament) {
   return s;
 }
 
-double measure(const mdem::Scene& scene, double seconds) {
+// CPU time of each OpenMP worker thread (libgomp keeps the same pool threads from region to
+// region, so differences over a run are the CPU each thread spent on it).
+std::vector<double> threadCpuSeconds() {
+  std::vector<double> t(omp_get_max_threads(), 0.0);
+#pragma omp parallel
+  {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    t[omp_get_thread_num()] = ts.tv_sec + 1e-9 * ts.tv_nsec;
+  }
+  return t;
+}
+
+// Element-steps per second of wall time, and per second of the busiest thread's CPU time (what
+// the wall rate would be if each thread had a core to itself: on a shared machine the wall
+// rate mostly measures the other processes).
+struct Rates {
+  double wall, cpu;
+};
+
+Rates measureOnce(const mdem::Scene& scene, double seconds, long fixedSteps) {
   mdem::Simulation sim(scene);
   sim.run(10);  // warm-up
   long steps = 0;
+  const std::vector<double> cpu0 = threadCpuSeconds();
   const auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0.0;
-  while (elapsed < seconds) {
-    sim.run(10);
-    steps += 10;
+  if (fixedSteps > 0) {
+    sim.run(fixedSteps);
+    steps = fixedSteps;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
-  return static_cast<double>(steps) * scene.bodies.size() / elapsed;
+  // Runs of about 10^6 element-steps: one OpenMP region each (see mdem/stepper.hpp).
+  const long chunk = std::max(1L, 1000000L / std::max(1, scene.bodies.size()));
+  while (fixedSteps <= 0 && elapsed < seconds) {
+    sim.run(chunk);
+    steps += chunk;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  const std::vector<double> cpu1 = threadCpuSeconds();
+  double busiest = 0.0;
+  for (std::size_t k = 0; k < cpu0.size(); ++k) busiest = std::max(busiest, cpu1[k] - cpu0[k]);
+  const double work = static_cast<double>(steps) * scene.bodies.size();
+  return {work / elapsed, work / busiest};
+}
+
+// Medians and spread of repeated measurements (the machine may be shared).
+struct Measured {
+  double median, low, high, cpuMedian;
+};
+Measured measure(const mdem::Scene& scene, const BenchOptions& o) {
+  std::vector<double> wall, cpu;
+  for (int k = 0; k < std::max(1, o.repeats); ++k) {
+    const Rates r = measureOnce(scene, o.seconds, o.steps);
+    wall.push_back(r.wall);
+    cpu.push_back(r.cpu);
+  }
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], wall.front(), wall.back(), cpu[cpu.size() / 2]};
 }
 }  // namespace
 
@@ -70,17 +123,24 @@ Command makeBenchDemCommand() {
     (*dem)->add_option("--filament-length", opt->filamentLength, "elements per filament");
     (*dem)->add_option("--threads", opt->threads, "OpenMP threads of the parallel run");
     (*dem)->add_option("--seconds", opt->seconds, "time per measurement");
+    (*dem)->add_option("--steps", opt->steps, "fixed steps per measurement instead of --seconds");
+    (*dem)->add_option("--repeats", opt->repeats, "measurements per case (median printed)");
   };
   c.selected = [dem] { return *dem && (*dem)->parsed(); };
   c.run = [opt] {
-    std::cout << "elements  filaments  threads  element-steps/s\n";
+    std::cout << "element-steps per second: wall clock (median, min .. max of the repeats) and per\n"
+                 "CPU second of the busiest thread (median)\n"
+                 "elements  filaments  threads      wall/s  min .. max                 cpu/s\n";
     for (int total : opt->totals) {
       const mdem::Scene s = benchScene(total, opt->filamentLength);
       const int filaments = (total + opt->filamentLength - 1) / opt->filamentLength;
-      for (int threads : {1, opt->threads}) {
+      std::vector<int> threadCounts{1};
+      if (opt->threads != 1) threadCounts.push_back(opt->threads);
+      for (int threads : threadCounts) {
         omp_set_num_threads(threads);
-        std::cout << fmt::format("{:8d}  {:9d}  {:7d}  {:.4g}\n", total, filaments, threads,
-                                 measure(s, opt->seconds))
+        const Measured m = measure(s, *opt);
+        std::cout << fmt::format("{:8d}  {:9d}  {:7d}  {:10.4g}  {:<10.4g} .. {:<10.4g}  {:10.4g}\n",
+                                 total, filaments, threads, m.median, m.low, m.high, m.cpuMedian)
                   << std::flush;
       }
     }

@@ -16,30 +16,13 @@ BondEffect::BondEffect(std::vector<Bond> bonds, int elementCount)
 
 void BondEffect::addForces(State& state) {
   Bodies& s = state.bodies;
-  const int nb = static_cast<int>(bonds_.size());
+  const int nb = size();
 #pragma omp parallel if (nb > 512)
   {
 #pragma omp for schedule(static)
-    for (int k = 0; k < nb; ++k) {
-      Bond& b = bonds_[k];
-      results_[k] = evaluateBond(b, s.position[b.a], s.orientation[b.a], s.position[b.b],
-                                 s.orientation[b.b]);
-      b.theta = results_[k].theta;  // follow the branch of the relative rotation
-    }
+    for (int k = 0; k < nb; ++k) computeBond(s, k);
 #pragma omp for schedule(static)
-    for (int i = 0; i < s.size(); ++i) {
-      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-      for (int e = start_[i]; e < start_[i + 1]; ++e) {
-        const BondResult& r = results_[incident_[e] >> 1];
-        if (incident_[e] & 1) {
-          f += r.forceB, t += r.torqueB;
-        } else {
-          f += r.forceA, t += r.torqueA;
-        }
-      }
-      s.force[i] += f;
-      s.torque[i] += t;
-    }
+    for (int i = 0; i < s.size(); ++i) gather(i, s.force[i], s.torque[i]);
   }
 }
 

@@ -38,23 +38,25 @@ KinematicMap::KinematicMap(const Boundary& b, int n)
   }
 }
 
-void KinematicMap::apply(Bodies& s, double t) const {
-  for (int i = 0; i < s.size(); ++i) {
-    if (const Prescribed* p = prescribed[i]) {
-      s.velocity[i] = p->velocityAt(t);
-      s.setAngularVelocityWorld(i, p->angularVelocityAt(t));
-      continue;
-    }
-    const FixedDofs* f = fixed[i];
-    if (!f) continue;
-    for (int d = 0; d < 3; ++d)
-      if (f->fixed[d]) s.velocity[i][d] = 0.0;
-    if (f->allRotationsFixed()) {
-      s.angularMomentumBody[i].setZero();
-    } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {
-      s.setAngularVelocityWorld(i, constrainedAngularVelocity(s, i, f->fixed));
-    }
+void KinematicMap::applyElement(Bodies& s, int i, double t) const {
+  if (const Prescribed* p = prescribed[i]) {
+    s.velocity[i] = p->velocityAt(t);
+    s.setAngularVelocityWorld(i, p->angularVelocityAt(t));
+    return;
   }
+  const FixedDofs* f = fixed[i];
+  if (!f) return;
+  for (int d = 0; d < 3; ++d)
+    if (f->fixed[d]) s.velocity[i][d] = 0.0;
+  if (f->allRotationsFixed()) {
+    s.angularMomentumBody[i].setZero();
+  } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {
+    s.setAngularVelocityWorld(i, constrainedAngularVelocity(s, i, f->fixed));
+  }
+}
+
+void KinematicMap::apply(Bodies& s, double t) const {
+  for (int i = 0; i < s.size(); ++i) applyElement(s, i, t);
 }
 
 Vec3 constrainedAngularVelocity(const Bodies& s, int i, const std::array<bool, 6>& fixed) {
@@ -80,42 +82,59 @@ Vec3 constrainedAngularVelocity(const Bodies& s, int i, const std::array<bool, 6
   return w;
 }
 
-void KinematicMap::clearConstrainedForces(Bodies& s) const {
-  for (int i = 0; i < s.size(); ++i) {
-    if (prescribed[i]) {
-      s.force[i].setZero();
-      s.torque[i].setZero();
-      continue;
-    }
-    if (const FixedDofs* f = fixed[i]) {
-      for (int d = 0; d < 3; ++d) {
-        if (f->fixed[d]) s.force[i][d] = 0.0;
-        if (f->fixed[3 + d]) s.torque[i][d] = 0.0;
-      }
+void KinematicMap::clearElement(int i, Vec3& force, Vec3& torque) const {
+  if (prescribed[i]) {
+    force.setZero();
+    torque.setZero();
+    return;
+  }
+  if (const FixedDofs* f = fixed[i]) {
+    for (int d = 0; d < 3; ++d) {
+      if (f->fixed[d]) force[d] = 0.0;
+      if (f->fixed[3 + d]) torque[d] = 0.0;
     }
   }
 }
 
-LoadEffect::LoadEffect(std::vector<Load> loads, const Bodies& initial) : loads_(std::move(loads)) {
+void KinematicMap::clearConstrainedForces(Bodies& s) const {
+  for (int i = 0; i < s.size(); ++i) clearElement(i, s.force[i], s.torque[i]);
+}
+
+LoadEffect::LoadEffect(std::vector<Load> loads, const Bodies& initial)
+    : loads_(std::move(loads)), start_(initial.size() + 1, 0) {
   for (const Load& l : loads_) {
     forceBody_.push_back(rotateInverse(initial.orientation[l.element], l.force));
     momentBody_.push_back(rotateInverse(initial.orientation[l.element], l.moment));
+    ++start_[l.element + 1];
+  }
+  for (int i = 0; i < initial.size(); ++i) {
+    if (start_[i + 1] > 0) loadedElements_.push_back(i);
+    start_[i + 1] += start_[i];
+  }
+  order_.resize(loads_.size());
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  for (int k = 0; k < static_cast<int>(loads_.size()); ++k) order_[fill[loads_[k].element]++] = k;
+}
+
+void LoadEffect::addToElement(const Bodies& s, int i, double time, Vec3& force,
+                              Vec3& torque) const {
+  for (int e = start_[i]; e < start_[i + 1]; ++e) {
+    const int k = order_[e];
+    const Load& l = loads_[k];
+    const double r = rampFactor(time, l.ramp);
+    if (l.following) {
+      force += r * rotate(s.orientation[i], forceBody_[k]);
+      torque += r * rotate(s.orientation[i], momentBody_[k]);
+    } else {
+      force += r * l.force;
+      torque += r * l.moment;
+    }
   }
 }
 
 void LoadEffect::addForces(State& state) {
   Bodies& s = state.bodies;
-  for (std::size_t k = 0; k < loads_.size(); ++k) {
-    const Load& l = loads_[k];
-    const double r = rampFactor(state.time, l.ramp);
-    if (l.following) {
-      s.force[l.element] += r * rotate(s.orientation[l.element], forceBody_[k]);
-      s.torque[l.element] += r * rotate(s.orientation[l.element], momentBody_[k]);
-    } else {
-      s.force[l.element] += r * l.force;
-      s.torque[l.element] += r * l.moment;
-    }
-  }
+  for (int i : loadedElements_) addToElement(s, i, state.time, s.force[i], s.torque[i]);
 }
 
 Energies LoadEffect::energy(const State& state) const {

@@ -72,10 +72,12 @@ struct KinematicMap {
   std::vector<char> kinematicRotation;         // per element
 
   KinematicMap(const Boundary& b, int elementCount);
-  // Overwrites constrained velocities for time t (after a half kick).
+  // Overwrites constrained velocities for time t (after a half kick), of one element or all.
+  void applyElement(Bodies& s, int i, double t) const;
   void apply(Bodies& s, double t) const;
   // Zeroes force / torque components on fixed and prescribed DOFs (for reporting and for the
-  // damping, which must see the unbalanced force only).
+  // damping, which must see the unbalanced force only), of one element or all.
+  void clearElement(int i, Vec3& force, Vec3& torque) const;
   void clearConstrainedForces(Bodies& s) const;
 };
 
@@ -89,10 +91,14 @@ class LoadEffect : public Effect {
   std::string name() const override { return "loads"; }
   void addForces(State& state) override;
   Energies energy(const State& state) const override;
+  // Adds the loads on element i at `time` to force / torque (in load order).
+  void addToElement(const Bodies& s, int i, double time, Vec3& force, Vec3& torque) const;
 
  private:
   std::vector<Load> loads_;
   std::vector<Vec3> forceBody_, momentBody_;  // following loads in the body frame
+  // Loads by element: order_[start_[i] .. start_[i+1]) index loads_; elements with loads.
+  std::vector<int> start_, order_, loadedElements_;
 };
 
 }  // namespace mesochain::mdem

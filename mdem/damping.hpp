@@ -18,6 +18,8 @@ class LocalDamping : public Effect {
   explicit LocalDamping(double alpha) : alpha_(alpha) {}
   std::string name() const override { return "local_damping"; }
   void addForces(State& state) override;
+  // Damps the force / torque of element i (the sum of the other effects on it).
+  void dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const;
   Energies energy(const State&) const override { return {}; }
 
  private:
@@ -29,6 +31,7 @@ class ViscousDamping : public Effect {
   explicit ViscousDamping(double rate) : rate_(rate) {}
   std::string name() const override { return "viscous_damping"; }
   void addForces(State& state) override;
+  void dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const;
   Energies energy(const State&) const override { return {}; }
 
  private:

@@ -19,7 +19,11 @@
 
 namespace mesochain::mdem {
 
-// v += h F / m, pi += h R^T tau for every element.
+// v += h F / m, pi += h R^T tau for one element and for every element.
+inline void kickElement(Bodies& s, int i, double h) {
+  s.velocity[i] += (h / s.mass[i]) * s.force[i];
+  s.angularMomentumBody[i] += h * rotateInverse(s.orientation[i], s.torque[i]);
+}
 void kick(Bodies& s, double h);
 
 // Exact-splitting free-rotor step of one body over h.
@@ -27,6 +31,7 @@ void freeRotorStep(Quat& q, Vec3& pi, const Vec3& inertia, double h);
 
 // x += h v; orientations by the free rotor, or, for elements whose rotation is kinematic
 // (kinematicRotation[i] != 0), by q <- exp(h omega_world) q. Accumulates the rotation probe.
+void driftElement(Bodies& s, int i, double h, bool kinematicRotation);
 void drift(Bodies& s, double h, const std::vector<char>& kinematicRotation);
 
 // Kinetic energies (zJ): translational 1/2 m v^2 and rotational 1/2 sum pi_i^2 / I_i.

@@ -1,5 +1,6 @@
 #include "mdem/run.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -56,8 +57,18 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   r.criticalTimeStep = sim.stability().criticalTimeStep;
   record(true);
   const long every = std::max(1L, scene.run.steps / 200);
+  const bool frames = xyz.is_open() || !vtkPrefix.empty();
+  const bool stopCheck = scene.run.stopKineticEnergy > 0.0;
+  auto nextMultiple = [](long k, long n) { return (k / n + 1) * n; };
   while (sim.stepCount() < scene.run.steps) {
-    sim.step();
+    // Advance to the next step that records, checks or reports, in one run (one OpenMP region).
+    const long k0 = sim.stepCount();
+    long next = scene.run.steps;
+    if (csv) next = std::min(next, nextMultiple(k0, o.energiesEvery));
+    if (frames) next = std::min(next, nextMultiple(k0, o.framesEvery));
+    if (stopCheck) next = std::min(next, nextMultiple(k0, scene.run.checkEvery));
+    if (progress) next = std::min(next, nextMultiple(k0, every));
+    sim.run(next - k0);
     const long k = sim.stepCount();
     const bool last = k == scene.run.steps;
     if (scene.run.stopKineticEnergy > 0.0 && k >= scene.run.minimumSteps &&

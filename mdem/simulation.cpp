@@ -4,11 +4,13 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/damping.hpp"
 #include "mdem/integrator.hpp"
+#include "mdem/stepper.hpp"
 
 namespace mesochain::mdem {
 
@@ -43,6 +45,20 @@ Simulation::Simulation(const Scene& scene)
     effects_.push_back(std::make_unique<LocalDamping>(scene.localDampingAlpha));
   if (named(scene.effects, "viscous_damping"))
     effects_.push_back(std::make_unique<ViscousDamping>(scene.viscousRate));
+
+  for (auto& e : effects_) {
+    if (auto* b = dynamic_cast<BondEffect*>(e.get())) {
+      core_.bonds = b;
+    } else if (auto* l = dynamic_cast<LoadEffect*>(e.get())) {
+      core_.loads = l;
+    } else if (auto* d = dynamic_cast<LocalDamping*>(e.get())) {
+      core_.localDamping = d;
+    } else if (auto* v = dynamic_cast<ViscousDamping*>(e.get())) {
+      core_.viscousDamping = v;
+    } else {
+      others_.push_back(e.get());
+    }
+  }
 
   limit_ = criticalTimeStep(state_.bodies, bondEffect_ ? bondEffect_->bonds() : std::vector<Bond>{},
                             kinematics_);
@@ -81,16 +97,24 @@ void Simulation::computeForces(bool withDamping) {
   kinematics_.clearConstrainedForces(s);
 }
 
-void Simulation::step() {
-  Bodies& s = state_.bodies;
-  kick(s, 0.5 * h_);
-  kinematics_.apply(s, state_.time + 0.5 * h_);
-  drift(s, h_, kinematics_.kinematicRotation);
-  state_.time += h_;
-  ++steps_;
-  computeForces(true);
-  kick(s, 0.5 * h_);
-  kinematics_.apply(s, state_.time);
+void Simulation::run(long steps) {
+  if (steps <= 0) return;
+  if (others_.empty()) {
+    const int threads = omp_get_max_threads();
+    if (partition_.threads != threads)
+      partition_ = partitionByBonds(state_.bodies.size(), bonds(), threads);
+    advanceFused(state_, core_, kinematics_, h_, steps, &partition_);
+  } else {
+    Bodies& s = state_.bodies;
+    for (long k = 0; k < steps; ++k) {
+      firstHalf(state_, kinematics_, h_);
+      std::fill(s.force.begin(), s.force.end(), Vec3::Zero());
+      std::fill(s.torque.begin(), s.torque.end(), Vec3::Zero());
+      for (Effect* e : others_) e->addForces(state_);
+      secondHalf(state_, core_, kinematics_, h_);
+    }
+  }
+  steps_ += steps;
 }
 
 Energies Simulation::energies() const {

@@ -4,8 +4,10 @@
 // integrator.hpp):
 //   kick(h/2); constraints(t + h/2); drift(h); t += h; forces; kick(h/2); constraints(t).
 // Forces: every effect in order bonds -> vdw_contact -> loads -> contact_damping ->
-// local_damping -> viscous_damping (the last two act on the accumulated force), then
-// constrained components are cleared.
+// local_damping -> viscous_damping (the damping effects act on the accumulated force), then
+// constrained components are cleared. When the scene has only bonds, loads and damping, run(n)
+// advances n steps in one OpenMP parallel region (stepper.hpp); other effects (contacts) add
+// their forces between the two halves of each step.
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "mdem/effect.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/stability.hpp"
+#include "mdem/stepper.hpp"
 
 namespace mesochain::mdem {
 
@@ -22,10 +25,8 @@ class Simulation {
   // positive or exceeds the critical time step.
   explicit Simulation(const Scene& scene);
 
-  void step();
-  void run(long steps) {
-    for (long k = 0; k < steps; ++k) step();
-  }
+  void step() { run(1); }
+  void run(long steps);
 
   // Kinetic energies plus the energies of every effect.
   Energies energies() const;
@@ -54,6 +55,9 @@ class Simulation {
   KinematicMap kinematics_;
   std::vector<EffectPtr> effects_;
   BondEffect* bondEffect_ = nullptr;
+  CoreEffects core_;             // the effects the fused step runs itself
+  std::vector<Effect*> others_;  // effects that add their forces on their own
+  ThreadPartition partition_;    // for the current number of OpenMP threads
   StabilityLimit limit_;
   double h_ = 0.0;
   long steps_ = 0;

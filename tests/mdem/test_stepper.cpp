@@ -1,0 +1,120 @@
+// The fused time step (stepper.hpp) gives the same trajectory, bit for bit, on 1 and 2 OpenMP
+// threads, in its barrier-free scheme (independent filaments) and its barrier scheme (one long
+// filament), and the same as the two-halves step used when other effects are present.
+#include <omp.h>
+
+#include <gtest/gtest.h>
+
+#include "chain_fixture.hpp"
+#include "mdem/stepper.hpp"
+
+namespace mesochain::mdem {
+namespace {
+
+using namespace testing;
+
+// `filaments` filaments of `length` elements side by side, shaken, with loads, a fixed root,
+// a hinge and both dampings: every per-element code path.
+Scene shakenFilaments(int filaments, int length) {
+  Scene s = filament(length);
+  for (int f = 1; f < filaments; ++f) {
+    FilamentSpec spec;
+    spec.count = length;
+    spec.start = {5.0 * f, 0.0, 0.0};
+    addFilament(s, spec);
+  }
+  for (int i = 0; i < s.bodies.size(); ++i) {
+    s.bodies.velocity[i] = Vec3(std::sin(1.3 * i), std::cos(0.7 * i), std::sin(0.3 * i));
+    s.bodies.setAngularVelocityWorld(i, Vec3(std::cos(1.1 * i), std::sin(0.9 * i), 0.5));
+  }
+  FixedDofs root, hinge;
+  root.element = 0, root.fixed.fill(true);
+  hinge.element = 3, hinge.fixed = {false, false, false, true, true, false};
+  s.boundary.fixed = {root, hinge};
+  Load l;
+  l.element = s.bodies.size() - 1, l.force = {1.0, 2.0, 3.0}, l.moment = {0.5, 0.0, 1.0};
+  l.following = true;
+  s.boundary.loads.push_back(l);
+  s.effects = {"bonds", "local_damping", "viscous_damping"};
+  s.localDampingAlpha = 0.1;
+  s.viscousRate = 10.0;
+  s.run.timeStepFraction = 0.5;
+  return s;
+}
+
+void expectIdentical(const Bodies& a, const Bodies& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (int i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.position[i], b.position[i]) << "element " << i;
+    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "element " << i;
+    ASSERT_EQ(a.angularMomentumBody[i], b.angularMomentumBody[i]) << "element " << i;
+    ASSERT_EQ(a.orientation[i].w, b.orientation[i].w) << "element " << i;
+    ASSERT_EQ(a.orientation[i].z, b.orientation[i].z) << "element " << i;
+  }
+}
+
+Bodies runWithThreads(const Scene& s, int threads, long steps) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  Simulation sim(s);
+  sim.run(steps / 2);
+  sim.step();
+  sim.run(steps - steps / 2 - 1);
+  omp_set_num_threads(saved);
+  return sim.bodies();
+}
+
+TEST(MdemStepper, SameResultOnOneAndTwoThreads) {
+  // 6 filaments of 100: cut between filaments, no barrier inside the run.
+  const Scene independent = shakenFilaments(6, 100);
+  EXPECT_TRUE(partitionByBonds(600, independent.bonds, 2).independent);
+  expectIdentical(runWithThreads(independent, 1, 100), runWithThreads(independent, 2, 100));
+  // One filament of 600: no cut, the barrier scheme.
+  const Scene single = shakenFilaments(1, 600);
+  EXPECT_FALSE(partitionByBonds(600, single.bonds, 2).independent);
+  expectIdentical(runWithThreads(single, 1, 40), runWithThreads(single, 2, 40));
+  // And the runs really moved.
+  EXPECT_GT((runWithThreads(single, 1, 40).position[599] - single.bodies.position[599]).norm(), 1e-5);
+}
+
+TEST(MdemStepper, PartitionCutsOnlyBetweenFilaments) {
+  // 220 elements, even shares at 73 and 146: the nearest cuts between filaments, 80 and 140.
+  const Scene s = shakenFilaments(11, 20);
+  const ThreadPartition p = partitionByBonds(220, s.bonds, 3);
+  ASSERT_TRUE(p.independent);
+  EXPECT_EQ(p.elementStart[1], 80);
+  EXPECT_EQ(p.elementStart[2], 140);
+  // Three filaments of 100 on two threads: no cut within 10% of 150.
+  EXPECT_FALSE(partitionByBonds(300, shakenFilaments(3, 100).bonds, 2).independent);
+  EXPECT_EQ(p.bondStart[3], static_cast<int>(s.bonds.size()));
+  for (int t = 0; t < 3; ++t)
+    for (int e = p.bondStart[t]; e < p.bondStart[t + 1]; ++e) {
+      const Bond& b = s.bonds[p.bondOrder[e]];
+      EXPECT_GE(b.a, p.elementStart[t]);
+      EXPECT_LT(b.b, p.elementStart[t + 1]);
+    }
+}
+
+TEST(MdemStepper, FusedStepEqualsTwoHalves) {
+  const Scene s = shakenFilaments(2, 400);
+  Simulation sim(s);  // for the time step and the initial forces
+  const double h = sim.timeStep();
+  State a = sim.state(), b = sim.state();
+  BondEffect bondsA(s.bonds, s.bodies.size()), bondsB(s.bonds, s.bodies.size());
+  LoadEffect loads(s.boundary.loads, s.bodies);
+  LocalDamping local(s.localDampingAlpha);
+  ViscousDamping viscous(s.viscousRate);
+  const KinematicMap km(s.boundary, s.bodies.size());
+  advanceFused(a, {&bondsA, &loads, &local, &viscous}, km, h, 50);
+  for (int k = 0; k < 50; ++k) {
+    firstHalf(b, km, h);
+    std::fill(b.bodies.force.begin(), b.bodies.force.end(), Vec3::Zero());
+    std::fill(b.bodies.torque.begin(), b.bodies.torque.end(), Vec3::Zero());
+    secondHalf(b, {&bondsB, &loads, &local, &viscous}, km, h);
+  }
+  EXPECT_EQ(a.time, b.time);
+  expectIdentical(a.bodies, b.bodies);
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
