@@ -1,6 +1,7 @@
 // `mesochain beam TABLES... [CONSTANTS.toml]`: fits scan tables (or takes the four constants),
 // idealises a beam, discretises it into bricks and writes beam.json, an mDEM model file and a
 // cantilever scene (docs/beam.md).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,7 @@
 
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
+#include "beam/fit_plot.hpp"
 #include "beam/mdem_export.hpp"
 #include "beam/si_units.hpp"
 #include "common/errors.hpp"
@@ -129,6 +131,17 @@ Command makeBeamCommand() {
     writeFile(dir / ex.modelFile, beam::mdemModelToml(run.brick, ex, header));
     writeFile(dir / "cantilever.toml", beam::cantileverSceneToml(run.brick, ex));
     run.report["files"] = {{"model", (dir / ex.modelFile).string()}, {"scene", (dir / "cantilever.toml").string()}};
+    // One PNG per fitted curve: fit-stretch.png, fit-twist.png, fit-bend-soft.png, fit-bend-hard.png.
+    std::vector<std::string> plots;
+    for (const beam::FittedCurve& fc : run.curves) {
+      std::string name = "fit-" + fc.label + ".png";
+      std::replace(name.begin(), name.end(), ' ', '-');
+      const std::string path = (dir / name).string();
+      beam::writeFitPlot(fc, path);
+      run.report["constants"][fc.reportKey]["plot"] = path;
+      plots.push_back(path);
+    }
+    run.report["files"]["plots"] = plots;
     if (!skipped.empty()) run.report["skipped_files"] = skipped;
     writeFile(dir / "beam.json", run.report.dump(2) + "\n");
 
@@ -153,7 +166,9 @@ Command makeBeamCommand() {
                              br["length_nm"].get<double>(), br["mass_ag"].get<double>(),
                              br["k_n_MPa_per_nm"].get<double>(), br["k_s_MPa_per_nm"].get<double>());
     std::cout << "wrote " << (dir / "beam.json").string() << ", " << (dir / ex.modelFile).string() << ", "
-              << (dir / "cantilever.toml").string() << "\n";
+              << (dir / "cantilever.toml").string();
+    for (const std::string& p : plots) std::cout << ", " << p;
+    std::cout << "\n";
     return 0;
   };
   return c;

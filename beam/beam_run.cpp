@@ -215,6 +215,7 @@ BeamRun runBeam(const BeamInputs& in) {
               {"fit", fitReport(f)}};
     if (!std::isnan(c.width)) j["measured_width_bohr"] = c.width;
     constants[kKeys[s]] = j;
+    run.curves.push_back({kNames[s], kKeys[s], c.label(), c.source, c.deformationUnit, std::move(pts), skipped, o, f});
   }
   const std::array<const std::optional<GivenConstant>*, 4> given = {&in.stretch, &in.twist, &in.bendSoft,
                                                                     &in.bendHard};

@@ -40,7 +40,22 @@ struct BeamInputs {
   std::string source = "<command line>";
 };
 
+// One curve as fitted: the points the fit saw (x after --measured-curvature), its options and
+// result (for plots, beam/fit_plot.hpp).
+struct FittedCurve {
+  std::string quantity;         // "C", "K", "D_s", "D_h"
+  std::string reportKey;        // "C_hartree", ... (the key in report["constants"])
+  std::string label;            // "stretch", "bend soft", ...
+  std::string source;           // file name
+  std::string deformationUnit;  // "strain", "rad_per_cell", "per_bohr"
+  std::vector<CurvePoint> points;  // converged points, as fitted
+  int unconvergedSkipped = 0;
+  FitOptions options;
+  QuadraticFit fit;
+};
+
 struct BeamRun {
+  std::vector<FittedCurve> curves;  // in input order
   BeamConstants constants;
   BeamConstants uncertainties;  // standard uncertainties (0 when unknown)
   Beam beam;                    // the chosen closure
