@@ -64,6 +64,11 @@ struct BeamRun {
   nlohmann::json report;
 };
 
+// Fits one scan curve (unconverged points left out; bends against the measured curvature when
+// asked). linearTerm: "auto" (on for stretch and twist, off for bends), "on" or "off".
+FittedCurve fitScanCurve(const ScanCurve& curve, const std::string& quantity, const std::string& reportKey,
+                         double tolerance, const std::string& linearTerm, bool measuredCurvature);
+
 // Throws InputError for missing, duplicated or inconsistent inputs and refused curves.
 BeamRun runBeam(const BeamInputs& inputs);
 

@@ -126,7 +126,7 @@ plot::Image renderFitPlot(const FittedCurve& c, int width, int height, int resid
   const double pad = yhi > ylo ? 0.06 * (yhi - ylo) : 1.0;
   ylo -= pad, yhi += pad;
 
-  plot::Figure top(fmt::format("{}: {} = {} {}, window |x| <= {:.4g}", c.label, c.quantity,
+  plot::Figure top(fmt::format("{}: {} = {} {}, |x| <= {:.3g}", c.label, c.quantity,
                                formatWithUncertainty(f.stiffness, f.uncertainty),
                                stiffnessUnitLabel(c.deformationUnit), f.windowHalfWidth));
   top.x = {deformationLabel(c.deformationUnit), plot::Scale::Linear, xt.lo, xt.hi};
