@@ -23,6 +23,18 @@ std::string deformationLabel(const std::string& unit) {
   return unit;
 }
 
+// An axis range on whole tick steps that the figure's own tick placement keeps as it is (it
+// recomputes the step from the fixed range, so widen until the range is stable).
+plot::AxisTicks stableTicks(double lo, double hi, int target) {
+  plot::AxisTicks t = plot::linearTicks(lo, hi, target);
+  for (int i = 0; i < 8; ++i) {
+    const plot::AxisTicks u = plot::linearTicks(t.lo, t.hi, target);
+    if (u.lo == t.lo && u.hi == t.hi) break;
+    t = u;
+  }
+  return t;
+}
+
 std::vector<double> samples(double a, double b, int n) {
   std::vector<double> x(n);
   for (int i = 0; i < n; ++i) x[i] = a + (b - a) * i / (n - 1);
@@ -116,7 +128,7 @@ plot::Image renderFitPlot(const FittedCurve& c, int width, int height, int resid
   }
 
   // Common x axis of both panels; y range of the energies with a margin.
-  const plot::AxisTicks xt = plot::linearTicks(r.lo, r.hi, std::max(2, width / 150));
+  const plot::AxisTicks xt = stableTicks(r.lo, r.hi, std::max(2, width / 150));
   double ylo = INFINITY, yhi = -INFINITY;
   for (const auto* v : {&yin, &yout, &yw}) {
     for (double y : *v) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
@@ -160,7 +172,7 @@ plot::Image renderFitPlot(const FittedCurve& c, int width, int height, int resid
     const double rp = rhi > rlo ? 0.1 * (rhi - rlo) : 1e-6;
     rlo -= rp, rhi += rp;
   }
-  const plot::AxisTicks rt = plot::linearTicks(rlo, rhi, std::max(2, residualHeight / 110));  // whole steps
+  const plot::AxisTicks rt = stableTicks(rlo, rhi, std::max(2, residualHeight / 110));
   rlo = rt.lo, rhi = rt.hi;
   for (double v : rout) offScale += v < rlo || v > rhi;
   plot::Figure bottom(fmt::format("residual U - fit ({})", c.source));
