@@ -1,6 +1,7 @@
 // `mesochain beam TABLES... [CONSTANTS.toml]`: fits scan tables (or takes the four constants),
 // idealises a beam, discretises it into bricks and writes beam.json, an mDEM model file and a
 // cantilever scene (docs/beam.md).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,9 +15,12 @@
 
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
+#include "beam/fit_plot.hpp"
 #include "beam/mdem_export.hpp"
+#include "beam/plate_run.hpp"
 #include "beam/si_units.hpp"
 #include "common/errors.hpp"
+#include "common/plot/png_io.hpp"
 #include "common/units.hpp"
 
 namespace mesochain::app {
@@ -40,18 +44,64 @@ struct BeamOptions {
   int bricks = 11;
 };
 
+struct PlateOptions {
+  std::string file;
+  std::string outputDir = "plate-out";
+  double tolerance = 0.02;
+  bool measuredCurvature = false;
+};
+
 void writeFile(const fs::path& p, const std::string& text) {
   std::ofstream out(p);
   if (!out) throw InputError(p.string(), "cannot write the file");
   out << text;
+}
+
+// `mesochain beam plate FILE.toml`: N-layer rigidities against the bonded plate and sliding layers.
+int runPlateCommand(const PlateOptions& o) {
+  beam::PlateInputs in;
+  beam::readPlateFile(o.file, in);
+  in.tolerance = o.tolerance;
+  in.measuredCurvature = o.measuredCurvature;
+  beam::PlateRun run = beam::runPlate(in);
+  fs::create_directories(o.outputDir);
+  const fs::path dir(o.outputDir);
+  std::vector<std::string> fits;
+  for (std::size_t i = 0; i < run.stacks.size(); ++i) {
+    const auto& s = run.stacks[i];
+    if (!s.curve) continue;
+    const std::string path = (dir / fmt::format("fit-{}-layers.png", s.layers)).string();
+    beam::writeFitPlot(*s.curve, path);
+    run.report["stacks"][i]["plot"] = path;
+    fits.push_back(path);
+  }
+  const std::string png = (dir / "plate.png").string();
+  plot::writePng(png, beam::renderPlatePlot(run));
+  run.report["files"] = {{"plot", png}, {"fit_plots", fits}};
+  writeFile(dir / "plate.json", run.report.dump(2) + "\n");
+  std::cout << fmt::format("D1 = {:.6g} eV ({})\n", run.singleLayer * units::kHartreeInEv,
+                           run.report["inputs"]["single_layer_rigidity_source"].get<std::string>());
+  std::cout << "  N   D (eV)             bonded (eV)   sliding (eV)  bonded fraction\n";
+  for (const auto& j : run.report["stacks"])
+    std::cout << fmt::format("{:3d}   {:<18} {:<13.6g} {:<13.6g} {}\n", j["layers"].get<int>(),
+                             beam::formatWithUncertainty(j["rigidity_eV"].get<double>(), j["uncertainty_eV"].get<double>()),
+                             j["bonded_eV"].get<double>(), j["sliding_eV"].get<double>(),
+                             j["bonded_fraction"].is_null() ? std::string("-")
+                                                            : fmt::format("{:.3g}", j["bonded_fraction"].get<double>()));
+  std::cout << "wrote " << (dir / "plate.json").string() << ", " << png;
+  for (const std::string& p : fits) std::cout << ", " << p;
+  std::cout << "\n";
+  return 0;
 }
 }  // namespace
 
 Command makeBeamCommand() {
   auto sub = std::make_shared<CLI::App*>(nullptr);
   auto opt = std::make_shared<BeamOptions>();
+  auto plateSub = std::make_shared<CLI::App*>(nullptr);
+  auto plate = std::make_shared<PlateOptions>();
   Command c;
-  c.attach = [sub, opt](CLI::App& app) {
+  c.attach = [sub, opt, plateSub, plate](CLI::App& app) {
     CLI::App* s = app.add_subcommand(
         "beam", "fit scan tables (or take C, K, D_s, D_h) to a beam and bricks; write beam.json and mDEM files");
     *sub = s;
@@ -73,9 +123,17 @@ Command makeBeamCommand() {
     s->add_option("--atoms-per-cell", opt->atoms, "carbon atoms per cell (mass)");
     s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml");
     s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)");
+    CLI::App* p = s->add_subcommand(
+        "plate", "N-layer bending rigidities (bend scans or given) against the bonded plate and sliding layers");
+    *plateSub = p;
+    p->add_option("file", plate->file, "plate file (.toml, docs/beam.md)")->required();
+    p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots");
+    p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime (default 0.02)");
+    p->add_flag("--measured-curvature", plate->measuredCurvature, "fit bends against the measured curvature");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [opt] {
+  c.run = [opt, plateSub, plate] {
+    if (*plateSub && (*plateSub)->parsed()) return runPlateCommand(*plate);
     beam::BeamInputs in;
     std::vector<std::string> skipped;
     for (const std::string& p : opt->inputs) {
@@ -129,6 +187,17 @@ Command makeBeamCommand() {
     writeFile(dir / ex.modelFile, beam::mdemModelToml(run.brick, ex, header));
     writeFile(dir / "cantilever.toml", beam::cantileverSceneToml(run.brick, ex));
     run.report["files"] = {{"model", (dir / ex.modelFile).string()}, {"scene", (dir / "cantilever.toml").string()}};
+    // One PNG per fitted curve: fit-stretch.png, fit-twist.png, fit-bend-soft.png, fit-bend-hard.png.
+    std::vector<std::string> plots;
+    for (const beam::FittedCurve& fc : run.curves) {
+      std::string name = "fit-" + fc.label + ".png";
+      std::replace(name.begin(), name.end(), ' ', '-');
+      const std::string path = (dir / name).string();
+      beam::writeFitPlot(fc, path);
+      run.report["constants"][fc.reportKey]["plot"] = path;
+      plots.push_back(path);
+    }
+    run.report["files"]["plots"] = plots;
     if (!skipped.empty()) run.report["skipped_files"] = skipped;
     writeFile(dir / "beam.json", run.report.dump(2) + "\n");
 
@@ -153,7 +222,9 @@ Command makeBeamCommand() {
                              br["length_nm"].get<double>(), br["mass_ag"].get<double>(),
                              br["k_n_MPa_per_nm"].get<double>(), br["k_s_MPa_per_nm"].get<double>());
     std::cout << "wrote " << (dir / "beam.json").string() << ", " << (dir / ex.modelFile).string() << ", "
-              << (dir / "cantilever.toml").string() << "\n";
+              << (dir / "cantilever.toml").string();
+    for (const std::string& p : plots) std::cout << ", " << p;
+    std::cout << "\n";
     return 0;
   };
   return c;

@@ -147,6 +147,36 @@ BeamConstants packed(const Beam& b) {
 
 }  // namespace
 
+FittedCurve fitScanCurve(const ScanCurve& c, const std::string& quantity, const std::string& reportKey,
+                         double tolerance, const std::string& linearTerm, bool measuredCurvature) {
+  FittedCurve fc;
+  fc.quantity = quantity;
+  fc.reportKey = reportKey;
+  fc.label = c.label();
+  fc.source = c.source;
+  fc.deformationUnit = c.deformationUnit;
+  for (const ScanPoint& p : c.points) {
+    if (!p.converged) {
+      ++fc.unconvergedSkipped;
+      continue;
+    }
+    double x = p.deformation;
+    if (measuredCurvature && c.kind == "bend") {
+      if (std::isnan(p.measuredCurvature))
+        throw InputError(c.source, fmt::format("point at deformation {:.6g}", p.deformation),
+                         "no measured_curvature_per_bohr", "a measured curvature for every point (or drop --measured-curvature)");
+      x = p.measuredCurvature;
+    }
+    fc.points.push_back({x, p.energy});
+  }
+  fc.options.source = c.source;
+  fc.options.quantity = quantity;
+  fc.options.relativeTolerance = tolerance;
+  fc.options.linearTerm = linearTerm == "on" || (linearTerm == "auto" && c.kind != "bend");
+  fc.fit = fitQuadraticRegime(fc.points, fc.options);
+  return fc;
+}
+
 BeamRun runBeam(const BeamInputs& in) {
   const std::string& src = in.source;
   if (in.cellsPerBrick < 1)
@@ -183,38 +213,19 @@ BeamRun runBeam(const BeamInputs& in) {
     if (!atoms) atoms = c.atomsPerCell, atomsFrom = c.source;
     if (!in.thickness && !std::isnan(c.thickness) && !thickness) thickness = c.thickness;
 
-    std::vector<CurvePoint> pts;
-    int skipped = 0;
-    for (const ScanPoint& p : c.points) {
-      if (!p.converged) {
-        ++skipped;
-        continue;
-      }
-      double x = p.deformation;
-      if (in.measuredCurvature && c.kind == "bend") {
-        if (std::isnan(p.measuredCurvature))
-          throw InputError(c.source, fmt::format("point at deformation {:.6g}", p.deformation),
-                           "no measured_curvature_per_bohr", "a measured curvature for every point (or drop --measured-curvature)");
-        x = p.measuredCurvature;
-      }
-      pts.push_back({x, p.energy});
-    }
-    FitOptions o;
-    o.source = c.source;
-    o.quantity = kNames[s];
-    o.relativeTolerance = in.tolerance;
-    o.linearTerm = in.linearTerm == "on" || (in.linearTerm == "auto" && c.kind != "bend");
-    const QuadraticFit f = fitQuadraticRegime(pts, o);
+    FittedCurve fc = fitScanCurve(c, kNames[s], kKeys[s], in.tolerance, in.linearTerm, in.measuredCurvature);
+    const QuadraticFit& f = fc.fit;
     slot(run.constants, s) = f.stiffness;
     slot(run.uncertainties, s) = f.uncertainty;
     have[s] = true;
     from[s] = c.source;
     json j = {{"value", f.stiffness}, {"uncertainty", f.uncertainty}, {"source", c.source},
               {"curve", c.label()}, {"deformation_unit", c.deformationUnit},
-              {"linear_term", o.linearTerm}, {"unconverged_points_skipped", skipped},
+              {"linear_term", fc.options.linearTerm}, {"unconverged_points_skipped", fc.unconvergedSkipped},
               {"fit", fitReport(f)}};
     if (!std::isnan(c.width)) j["measured_width_bohr"] = c.width;
     constants[kKeys[s]] = j;
+    run.curves.push_back(std::move(fc));
   }
   const std::array<const std::optional<GivenConstant>*, 4> given = {&in.stretch, &in.twist, &in.bendSoft,
                                                                     &in.bendHard};

@@ -40,7 +40,22 @@ struct BeamInputs {
   std::string source = "<command line>";
 };
 
+// One curve as fitted: the points the fit saw (x after --measured-curvature), its options and
+// result (for plots, beam/fit_plot.hpp).
+struct FittedCurve {
+  std::string quantity;         // "C", "K", "D_s", "D_h"
+  std::string reportKey;        // "C_hartree", ... (the key in report["constants"])
+  std::string label;            // "stretch", "bend soft", ...
+  std::string source;           // file name
+  std::string deformationUnit;  // "strain", "rad_per_cell", "per_bohr"
+  std::vector<CurvePoint> points;  // converged points, as fitted
+  int unconvergedSkipped = 0;
+  FitOptions options;
+  QuadraticFit fit;
+};
+
 struct BeamRun {
+  std::vector<FittedCurve> curves;  // in input order
   BeamConstants constants;
   BeamConstants uncertainties;  // standard uncertainties (0 when unknown)
   Beam beam;                    // the chosen closure
@@ -48,6 +63,11 @@ struct BeamRun {
   Brick brick;
   nlohmann::json report;
 };
+
+// Fits one scan curve (unconverged points left out; bends against the measured curvature when
+// asked). linearTerm: "auto" (on for stretch and twist, off for bends), "on" or "off".
+FittedCurve fitScanCurve(const ScanCurve& curve, const std::string& quantity, const std::string& reportKey,
+                         double tolerance, const std::string& linearTerm, bool measuredCurvature);
 
 // Throws InputError for missing, duplicated or inconsistent inputs and refused curves.
 BeamRun runBeam(const BeamInputs& inputs);
