@@ -18,6 +18,7 @@
 #include "objective/core/cell_file.hpp"
 #include "objective/core/gen_file.hpp"
 #include "objective/core/xyz_file.hpp"
+#include "objective/drivers/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {
@@ -29,22 +30,6 @@ struct RunOptions {
   std::string structure;
   long unroll = 0;
 };
-
-dftb::Calculator makeCalculator(const objective::CellInput& in) {
-  auto params = std::make_shared<const dftb::ParameterSet>(dftb::ParameterSet::load(
-      in.cell.speciesNames, in.parameterFiles, in.source, in.maxAngularMomentum));
-  dftb::CalculatorSettings s;
-  s.band.helicalKPoints = in.helicalKPoints;
-  s.band.angular = in.angular;
-  s.band.electronicTemperature = in.electronicTemperature;
-  if (in.dispersion.model == "lj") {
-    s.dispersion.enabled = true;
-    s.dispersion.epsilon = in.dispersion.epsilon;
-    s.dispersion.r0 = in.dispersion.r0;
-    s.dispersion.cutoff = in.dispersion.cutoff;
-  }
-  return dftb::Calculator(params, s);
-}
 
 void writeStructures(const std::string& prefix, const objective::ObjectiveCell& cell,
                      const dftb::Result& r, long unroll) {
@@ -66,7 +51,7 @@ void writeStructures(const std::string& prefix, const objective::ObjectiveCell& 
 
 int runCell(const RunOptions& o) {
   const objective::CellInput in = objective::readCellFile(o.cellFile);
-  const dftb::Calculator calc = makeCalculator(in);
+  const dftb::Calculator calc = objective::makeCalculator(in);
   const bool tty = isatty(STDERR_FILENO);
   std::unique_ptr<objective::RelaxOutcome> relax;
   dftb::Result result;

@@ -7,9 +7,10 @@ Command makeRunCommand();
 Command makeDemCommand();
 Command makeBenchCommand();
 Command makeBuildCommand();
+Command makeScanCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeScanCommand(), makeBuildCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app
