@@ -1,7 +1,7 @@
 // `mesochain bench scan [--csv FILE]`: how a fitted stiffness and its time change with the
 // helical k-points and the relaxation tolerance, for small tubes (2-atom helical cells).
 // The stiffness is the curvature of the quadratic through three scan points
-// (E(-h), E(0), E(+h)): C = (E+ + E- - 2 E0) / h^2 per cell of length T0 (stretch, h = 0.5 %)
+// (E(-h), E(0), E(+h)): C = (E+ + E- - 2 E0) / h^2 per slice of length T0 (N_a helical cells) (stretch, h = 0.5 %)
 // and K likewise for twist (h = 0.25 degrees per cell). Each row runs the whole scan: the T0
 // search of the reference and the two deformed points, each relaxed to the tolerance. The
 // error is relative to 1024 k-points at 1e-7 Ha/Bohr.
@@ -56,14 +56,15 @@ Row runOne(const std::string& table, int n, int m, objective::ScanKind kind, int
   row.kind = objective::scanKindName(kind);
   row.kpoints = kpoints;
   row.tolerance = tolerance;
-  row.stiffness = (r.points[0].energy + r.points[2].energy - 2 * r.points[1].energy) / (h * h);
+  row.stiffness = r.cellsPerSlice *
+                  (r.points[0].energy + r.points[2].energy - 2 * r.points[1].energy) / (h * h);
   for (const auto& p : r.points) row.evaluations += p.evaluations;
   return row;
 }
 
 int benchScan(const std::string& table, const std::string& csv) {
   std::vector<Row> rows;
-  std::cout << "stiffness per cell of length T0 from a 3-point quadratic; error against 1024 "
+  std::cout << "stiffness per slice of length T0 from a 3-point quadratic; error against 1024 "
                "k-points at 1e-7 Ha/Bohr\n";
   std::cout << fmt::format("{:7} {:8} {:>6} {:>9} {:>16} {:>10} {:>8} {:>6}\n", "tube", "kind", "k",
                            "tol", "stiffness [Ha]", "rel.error", "time[s]", "evals");

@@ -29,22 +29,24 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
   const bool bend = r.kind == objective::ScanKind::Bend;
   double e0 = 0;
   for (const auto& p : r.points)
-    if (p.deformation == 0.0) e0 = p.energy;
-  os << fmt::format("scan {}{}: T0 = {:.6f} Bohr, {} atoms per cell\n",
+    if (p.deformation == 0.0) e0 = p.energy * r.cellsPerSlice;
+  os << fmt::format("scan {}{}: T0 = {:.6f} Bohr, {} atoms per cell, {} cell(s) per slice of "
+                    "length T0 (energies per slice)\n",
                     objective::scanKindName(r.kind),
                     bend ? std::string(" (") + objective::bendDirectionName(r.direction) + ")" : "",
-                    r.translation0, r.atomsPerCell);
+                    r.translation0, r.atomsPerCell, r.cellsPerSlice);
   if (!std::isnan(r.thickness))
     os << fmt::format("thickness {:.4f} Bohr ({:.3f} Å), width {:.4f} Bohr ({:.3f} Å)\n",
                       r.thickness, r.thickness * units::kBohrInAngstrom, r.width,
                       r.width * units::kBohrInAngstrom);
   os << fmt::format("{:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
                     std::string("deformation[") + objective::deformationUnit(r.kind) + "]",
-                    "energy [Ha/cell]", "E - E0 [Ha]", "conv", "max|F|", "time[s]", "evals",
+                    "energy [Ha/slice]", "E - E0 [Ha]", "conv", "max|F|", "time[s]", "evals",
                     "k x mu", bend ? "  measured 1/R" : "");
   for (const auto& p : r.points) {
     os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
-                      p.deformation, p.energy, p.energy - e0, p.converged ? "yes" : "NO",
+                      p.deformation, p.energy * r.cellsPerSlice,
+                      p.energy * r.cellsPerSlice - e0, p.converged ? "yes" : "NO",
                       p.maxForce, p.timeSeconds, p.evaluations,
                       fmt::format("{}x{}", p.helicalKPoints, p.angularPoints));
     if (bend) os << fmt::format("  {:.6e}", std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature);

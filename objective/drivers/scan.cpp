@@ -273,6 +273,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     const ObjectiveCell& ref = done.at(0).cell;
     out.translation0 = ref.symmetry.translation();
     out.twist0 = ref.symmetry.twist();
+    out.cellsPerSlice = ref.symmetry.rotationOrder();
     if (s.dimensionsInterlayer > 0) {
       const CollapsedDimensions d = measureCollapsed(ref, s.dimensionsInterlayer);
       out.thickness = d.thickness;

@@ -14,9 +14,11 @@
 //            (curvature ascending), the first ring from the straight reference, each next one
 //            unbent from its neighbour and rebent at the new radius. The measured curvature is
 //            1 / (mean distance of the relaxed atoms from the ring axis).
-// Energies are Mermin free energies per objective cell (Hartree): per cell of length T0 for a
-// straight cell, and for a ring the total ring energy / N_a, i.e. per cell of the straight
-// reference (the same atoms), so curves compare directly with the reference energy.
+// ScanPoint energies are Mermin free energies per objective cell (Hartree); for a ring, the
+// total ring energy / N_a, i.e. per cell of the straight reference (the same atoms), so curves
+// compare directly with the reference energy. The curve files (scan_output.hpp) multiply by
+// cellsPerSlice: energies per slice of length T0 (N_a objective cells of a helical cell with
+// rotation order N_a; one translational cell).
 //
 // A checkpoint (JSON) is written atomically (temporary file + rename) after every point; a scan
 // resumed from it skips the completed points (restoring their relaxed atoms for warm starts)
@@ -78,7 +80,10 @@ struct ScanResult {
   BendDirection direction = BendDirection::Soft;
   double translation0 = 0.0;   // T0, Bohr
   double twist0 = 0.0;         // the reference twist, rad per cell
-  int atomsPerCell = 0;
+  int atomsPerCell = 0;        // atoms of the objective cell
+  // Objective cells in one slice of length T0: the reference's rotation order N_a (a helical
+  // cell with C_{N_a} holds 1/N_a of the slice). Curve files report energies per slice.
+  int cellsPerSlice = 1;
   double thickness = std::numeric_limits<double>::quiet_NaN();  // Bohr (when measured)
   double width = std::numeric_limits<double>::quiet_NaN();
   std::vector<ScanPoint> points;  // sorted by deformation (reference included)

@@ -17,7 +17,7 @@ json scanCurveJson(const ScanResult& r) {
   j["kind"] = scanKindName(r.kind);
   if (r.kind == ScanKind::Bend) j["direction"] = bendDirectionName(r.direction);
   j["T0_bohr"] = r.translation0;
-  j["atoms_per_cell"] = r.atomsPerCell;
+  j["atoms_per_cell"] = r.atomsPerCell * r.cellsPerSlice;
   if (!std::isnan(r.thickness)) j["thickness_bohr"] = r.thickness;
   if (!std::isnan(r.width)) j["width_bohr"] = r.width;
   j["deformation_unit"] = deformationUnit(r.kind);
@@ -25,7 +25,7 @@ json scanCurveJson(const ScanResult& r) {
   for (const ScanPoint& p : r.points) {
     json q;
     q["deformation"] = p.deformation;
-    q["energy_hartree"] = p.energy;
+    q["energy_hartree"] = p.energy * r.cellsPerSlice;
     q["converged"] = p.converged;
     q["max_force_hartree_per_bohr"] = p.maxForce;
     q["time_s"] = p.timeSeconds;
@@ -47,7 +47,7 @@ std::string scanCurveCsv(const ScanResult& r) {
       "angular_points,evaluations";
   s += bend ? ",measured_curvature_per_bohr\n" : "\n";
   for (const ScanPoint& p : r.points) {
-    s += fmt::format("{:.17g},{:.17g},{},{:.6e},{:.3f},{},{},{}", p.deformation, p.energy,
+    s += fmt::format("{:.17g},{:.17g},{},{:.6e},{:.3f},{},{},{}", p.deformation, p.energy * r.cellsPerSlice,
                      p.converged ? "true" : "false", p.maxForce, p.timeSeconds, p.helicalKPoints,
                      p.angularPoints, p.evaluations);
     if (bend)

@@ -1,7 +1,8 @@
 #pragma once
 // The energy-against-deformation table of a scan, as JSON (read by the beam fitter; format
 // documented in docs/scan-file.md) and CSV with the same columns. Units are in the key names:
-// energies in Hartree per cell (see objective/drivers/scan.hpp), lengths in Bohr, time in
+// energies in Hartree per slice of length T0 (ScanResult::cellsPerSlice objective cells; see
+// objective/drivers/scan.hpp), atoms_per_cell likewise per slice, lengths in Bohr, time in
 // seconds. PNG plots of a curve come from the plot library (hook: app/cmd_scan.cpp).
 #include <string>
 

@@ -89,7 +89,10 @@ TEST(Scan, StretchMatchesIndependentRelaxations) {
   EXPECT_EQ(j["deformation_unit"], "strain");
   EXPECT_FALSE(j.contains("direction"));
   EXPECT_EQ(j["points"].size(), 4u);
-  EXPECT_DOUBLE_EQ(j["points"][3]["energy_hartree"].get<double>(), r.points[3].energy);
+  // Per slice of length T0: the 2-atom cell with C_5 is a fifth of it.
+  EXPECT_EQ(r.cellsPerSlice, 5);
+  EXPECT_EQ(j["atoms_per_cell"], 10);
+  EXPECT_DOUBLE_EQ(j["points"][3]["energy_hartree"].get<double>(), 5 * r.points[3].energy);
 }
 
 TEST(Scan, RingOfTinyCurvatureApproachesTheStraightEnergy) {
