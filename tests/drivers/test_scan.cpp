@@ -194,3 +194,46 @@ TEST(Scan, BadListsAreInputErrors) {
   s.rotationOrders = {100};
   EXPECT_THROW(runScan(tube, carbon(), settings(8), s), InputError);
 }
+
+TEST(Scan, TwistOfAnAchiralTubeIsEvenInTheTwist) {
+  // A zigzag tube is mirror-symmetric: twisting by +dgamma and -dgamma gives mirror images of
+  // one structure, so the relaxed energies agree; both lie above the untwisted reference.
+  // 128 kappa points: with 32 the two differ by 3e-3 relative (a twist moves the helical grid
+  // against the bands, differently for +-dgamma at finite sampling); with 128, below 1e-5.
+  ScanSettings s;
+  s.kind = ScanKind::Twist;
+  s.values = {0.5 * units::kDegree, -0.5 * units::kDegree};
+  s.relax.forceTolerance = 1e-6;
+  s.relax.axialTolerance = 1e-6;
+  s.relax.relaxTranslation = true;
+  s.progressBar = false;
+  const ScanResult r = runScan(buildNanotubeHelical(10, 0, kBond), carbon(), settings(128), s);
+  ASSERT_EQ(r.points.size(), 3u);
+  const double ePlus = r.points[2].energy - r.points[1].energy;
+  const double eMinus = r.points[0].energy - r.points[1].energy;
+  EXPECT_GT(ePlus, 0.0);
+  EXPECT_NEAR(eMinus / ePlus, 1.0, 1e-5);
+  EXPECT_NEAR(r.points[2].cell.symmetry.twist() - r.twist0, 0.5 * units::kDegree, 1e-14);
+  EXPECT_EQ(scanCurveJson(r)["deformation_unit"], "rad_per_cell");
+}
+
+TEST(Scan, SoftAndHardRingsOfARoundTubeAgree) {
+  // The (8,0) cross-section is invariant under a quarter turn (C_8), so bending it about
+  // perpendicular axes gives the same ring.
+  const ObjectiveCell tube = buildNanotubeTranslational(8, 0, kBond);
+  ScanSettings s;
+  s.kind = ScanKind::Bend;
+  s.rotationOrders = {64};
+  s.ringAngular.samples = 4;
+  s.relax.forceTolerance = 1e-4;
+  s.relax.relaxTranslation = false;
+  s.progressBar = false;
+  const ScanResult soft = runScan(tube, carbon(), settings(8), s);
+  s.direction = BendDirection::Hard;
+  const ScanResult hard = runScan(tube, carbon(), settings(8), s);
+  ASSERT_EQ(soft.points.size(), 2u);
+  ASSERT_EQ(hard.points.size(), 2u);
+  EXPECT_GT(soft.points[1].energy - soft.points[0].energy, 1e-3);
+  EXPECT_NEAR(soft.points[1].energy, hard.points[1].energy, 1e-6);
+  EXPECT_EQ(scanCurveJson(hard)["direction"], "hard");
+}
