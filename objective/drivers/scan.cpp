@@ -172,14 +172,17 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
                                  cell.symmetry.rotationOrder(), cell.symmetry.twist(),
                                  cell.symmetry.isRing() ? ", a ring" : ""),
                      "a straight translational cell (twist 0, rotation order 1)");
+  if (cell.symmetry.isRing())
+    throw InputError(kSource, "the cell of a scan", "a closed ring (translation 0)",
+                     "a straight cell (translation > 0)");
   ScanResult out;
   out.kind = s.kind;
   out.direction = s.direction;
   out.atomsPerCell = cell.atomCount();
   out.inputHash = scanInputHash(cell, calcSettings, s);
-  // Deformation values of the plan do not depend on T0 except the bend curvatures, which are
-  // recomputed once T0 is known; validate the lists before any work.
-  makePlan(s, cell.symmetry.isRing() ? 1.0 : cell.symmetry.translation());
+  // Validates the lists before any work. The plan's curvatures need T0: the input's until the
+  // reference is relaxed (or restored).
+  std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation());
 
   const dftb::Calculator straightCalc(params, calcSettings);
   dftb::CalculatorSettings ringSettings = calcSettings;
@@ -234,36 +237,31 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     return p;
   };
 
-  // The plan needs T0, known once the reference is relaxed (or restored).
-  std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation());
   ProgressBar bar(fmt::format("scan {}", scanKindName(s.kind)), static_cast<int>(plan.size()));
   if (!s.progressBar) bar.finish();
   bar.skip(static_cast<int>(done.size()));
   int computed = 0;
-  for (int k = 0; k < static_cast<int>(plan.size()); ++k) {
-    if (k > 0 && done.count(0)) {
-      // Bend curvatures follow T0 of the relaxed reference.
-      const double t0 = done.at(0).cell.symmetry.translation();
-      if (k == 1) plan = makePlan(s, t0);
+  const int total = static_cast<int>(plan.size());
+  for (int k = 0; k < total; ++k) {
+    if (!done.count(k)) {
+      if (s.stopAfter >= 0 && computed >= s.stopAfter) break;
+      bar.update(k, fmt::format("point {}/{}", k + 1, total));
+      if (k == 0) {
+        done[0] = relaxPoint(plan[0], cell, true, bar, k, total);
+      } else {
+        const ScanPoint& ref = done.at(0);
+        const ObjectiveCell start =
+            startingCell(s, plan[k], done.at(plan[k].from), ref, ref.cell.symmetry.translation(),
+                         ref.cell.symmetry.twist());
+        done[k] = relaxPoint(plan[k], start, false, bar, k, total);
+      }
+      ++computed;
+      checkpoint.planSize = total;
+      if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
+      bar.update(k + 1);
     }
-    if (done.count(k)) continue;
-    if (s.stopAfter >= 0 && computed >= s.stopAfter) break;
-    bar.update(k, fmt::format("point {}/{}", k + 1, plan.size()));
-    ScanPoint p;
-    if (k == 0) {
-      p = relaxPoint(plan[0], cell, true, bar, k, static_cast<int>(plan.size()));
-    } else {
-      const ScanPoint& ref = done.at(0);
-      const double t0 = ref.cell.symmetry.translation();
-      p = relaxPoint(plan[k],
-                     startingCell(s, plan[k], done.at(plan[k].from), ref, t0, ref.cell.symmetry.twist()),
-                     false, bar, k, static_cast<int>(plan.size()));
-    }
-    done[k] = std::move(p);
-    ++computed;
-    checkpoint.planSize = static_cast<int>(plan.size());
-    if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
-    bar.update(k + 1);
+    // Bend curvatures 1/R = 2 pi / (N_a T0) follow T0 of the relaxed reference.
+    if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation());
   }
   bar.finish();
 
