@@ -15,14 +15,16 @@ Command makeBenchDemCommand();
 Command makeBenchEwaldCommand();
 Command makeBenchSccCommand();
 Command makeBenchNetworkCommand();
+Command makeBenchScanCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(
       std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-                           makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand()});
+                           makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(),
+                           makeBenchScanCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
-    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network");
+    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, scan");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

@@ -21,6 +21,7 @@
 #include "objective/core/cell_file.hpp"
 #include "objective/core/gen_file.hpp"
 #include "objective/core/xyz_file.hpp"
+#include "objective/drivers/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {
@@ -73,32 +74,6 @@ void writeRelaxPlot(const std::string& path, const RelaxTrace& t, double toleran
   std::cerr << "wrote " << path << "\n";
 }
 
-dftb::Calculator makeCalculator(const objective::CellInput& in) {
-  auto params = std::make_shared<const dftb::ParameterSet>(dftb::ParameterSet::load(
-      in.cell.speciesNames, in.parameterFiles, in.source, in.maxAngularMomentum));
-  dftb::CalculatorSettings s;
-  s.band.helicalKPoints = in.helicalKPoints;
-  s.band.angular = in.angular;
-  s.band.electronicTemperature = in.electronicTemperature;
-  if (in.dispersion.model == "lj") {
-    s.dispersion.enabled = true;
-    s.dispersion.epsilon = in.dispersion.epsilon;
-    s.dispersion.r0 = in.dispersion.r0;
-    s.dispersion.cutoff = in.dispersion.cutoff;
-    s.dispersion.ewald = in.dispersion.summation == "ewald";
-    s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
-  }
-  s.scc.enabled = in.scc.enabled;
-  s.scc.chargeTolerance = in.scc.chargeTolerance;
-  s.scc.energyTolerance = in.scc.energyTolerance;
-  s.scc.maxIterations = in.scc.maxIterations;
-  s.scc.mixer = in.scc.mixer;
-  s.scc.mixing = in.scc.mixing;
-  s.scc.ewaldTolerance = in.scc.ewaldTolerance;
-  s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
-  return dftb::Calculator(params, s);
-}
-
 void writeStructures(const std::string& prefix, const objective::ObjectiveCell& cell,
                      const dftb::Result& r, long unroll) {
   objective::XyzExtras extras;
@@ -122,7 +97,7 @@ int runCell(const RunOptions& o) {
   if (!o.plot.empty() && in.task.type != "relax")
     throw InputError("<command line>", "option --plot", "task " + in.task.type + " in " + o.cellFile,
                      "a cell file with task relax (the plot shows the relaxation history)");
-  const dftb::Calculator calc = makeCalculator(in);
+  const dftb::Calculator calc = objective::makeCalculator(in);
   const bool tty = isatty(STDERR_FILENO);
   std::unique_ptr<objective::RelaxOutcome> relax;
   dftb::Result result;

@@ -8,9 +8,11 @@ Command makeDemCommand();
 Command makeBenchCommand();
 Command makeBuildCommand();
 Command makeBeamCommand();
+Command makeScanCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeBeamCommand(), makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeScanCommand(), makeBuildCommand(),
+          makeBeamCommand(),    makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

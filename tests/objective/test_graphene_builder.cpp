@@ -91,3 +91,25 @@ TEST(GrapheneRingSector, RejectsBadInput) {
   // 10 layers around a ring of radius ~4 Å: the inner layers would have negative radius.
   EXPECT_THROW(buildGrapheneRingSector(10, Direction::Zigzag, 10, 1, kLayer, kBond), InputError);
 }
+
+// Stacks of 1..6 layers along both directions: the right number of atoms, layer radii one
+// interlayer apart about an unstrained middle, and no atoms (or images) closer than 0.9 bond
+// (layers keep the middle layer's angles, so layer k is compressed by R_k / R_mid: at
+// N_a = 200 the innermost of 6 layers by 3 %; at N_a = 60 by 10 %, which this would catch).
+TEST(GrapheneRingSector, OneToSixLayersArmchairAndZigzag) {
+  for (Direction dir : {Direction::Armchair, Direction::Zigzag})
+    for (int layers = 1; layers <= 6; ++layers) {
+      const int na = 200, cells = 2;
+      const ObjectiveCell c = buildGrapheneRingSector(layers, dir, na, cells, kLayer, kBond);
+      ASSERT_EQ(c.atomCount(), 4 * cells * layers);
+      double rMin = 1e9, rMax = 0;
+      for (int a = 0; a < c.atomCount(); ++a) {
+        const double r = std::hypot(c.positions(0, a), c.positions(1, a));
+        rMin = std::min(rMin, r), rMax = std::max(rMax, r);
+      }
+      EXPECT_NEAR(rMax - rMin, (layers - 1) * kLayer, 1e-9);
+      const double period = dir == Direction::Zigzag ? std::sqrt(3.0) * kBond : 3 * kBond;
+      EXPECT_NEAR(0.5 * (rMax + rMin), na * cells * period / (2 * kPi), 1e-9);
+      EXPECT_NO_THROW(c.validate("stack", 0.9 * kBond)) << layers << " layers";
+    }
+}

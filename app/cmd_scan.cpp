@@ -1,0 +1,113 @@
+// `mesochain scan SCAN.toml [--resume] [--stop-after N]`: a deformation scan (stretch, twist
+// or bend) of an objective cell, written as a curve JSON and CSV (docs/scan-file.md).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "common/units.hpp"
+#include "objective/core/xyz_file.hpp"
+#include "objective/drivers/cell_calculator.hpp"
+#include "objective/drivers/scan.hpp"
+#include "objective/drivers/scan_file.hpp"
+#include "objective/drivers/scan_output.hpp"
+
+namespace mesochain::app {
+
+namespace {
+struct ScanOptions {
+  std::string scanFile;
+  bool resume = false;
+  int stopAfter = -1;
+};
+
+void printTable(std::ostream& os, const objective::ScanResult& r) {
+  const bool bend = r.kind == objective::ScanKind::Bend;
+  double e0 = 0;
+  for (const auto& p : r.points)
+    if (p.deformation == 0.0) e0 = p.energy * r.cellsPerSlice;
+  os << fmt::format("scan {}{}: T0 = {:.6f} Bohr, {} atoms per cell, {} cell(s) per slice of "
+                    "length T0 (energies per slice)\n",
+                    objective::scanKindName(r.kind),
+                    bend ? std::string(" (") + objective::bendDirectionName(r.direction) + ")" : "",
+                    r.translation0, r.atomsPerCell, r.cellsPerSlice);
+  if (!std::isnan(r.thickness))
+    os << fmt::format("thickness {:.4f} Bohr ({:.3f} Å), width {:.4f} Bohr ({:.3f} Å)\n",
+                      r.thickness, r.thickness * units::kBohrInAngstrom, r.width,
+                      r.width * units::kBohrInAngstrom);
+  os << fmt::format("{:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
+                    std::string("deformation[") + objective::deformationUnit(r.kind) + "]",
+                    "energy [Ha/slice]", "E - E0 [Ha]", "conv", "max|F|", "time[s]", "evals",
+                    "k x mu", bend ? "  measured 1/R" : "");
+  for (const auto& p : r.points) {
+    os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
+                      p.deformation, p.energy * r.cellsPerSlice,
+                      p.energy * r.cellsPerSlice - e0, p.converged ? "yes" : "NO",
+                      p.maxForce, p.timeSeconds, p.evaluations,
+                      fmt::format("{}x{}", p.helicalKPoints, p.angularPoints));
+    if (bend) os << fmt::format("  {:.6e}", std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature);
+    os << "\n";
+  }
+}
+
+int runScanCommand(const ScanOptions& o) {
+  objective::ScanInput in = objective::readScanFile(o.scanFile);
+  in.settings.resume = o.resume;
+  in.settings.stopAfter = o.stopAfter;
+  std::error_code ec;
+  if (!o.resume && !in.settings.checkpointPath.empty() &&
+      std::filesystem::exists(in.settings.checkpointPath, ec))
+    std::cerr << "mesochain: note: starting afresh; the checkpoint " << in.settings.checkpointPath
+              << " will be overwritten (use --resume to continue it)\n";
+  const objective::ScanResult r =
+      objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
+                         objective::calculatorSettings(in.cell), in.settings);
+  printTable(std::cout, r);
+  objective::writeScanCurve(r, in.jsonPath, in.csvPath);
+  std::cerr << "wrote " << in.jsonPath << (in.csvPath.empty() ? "" : " and " + in.csvPath) << "\n";
+  // Hook for PNG plots of the curve: the plot library will be called here with the ScanResult
+  // (energy against deformation, and measured against nominal curvature for bend).
+  if (!in.structurePrefix.empty())
+    for (std::size_t k = 0; k < r.points.size(); ++k) {
+      const std::string file = fmt::format("{}-{:03d}.xyz", in.structurePrefix, k);
+      objective::XyzExtras extras;
+      extras.energy = r.points[k].energy;
+      objective::writeXyzFile(file, r.points[k].cell, extras);
+    }
+  if (!r.complete) {
+    std::cerr << fmt::format("mesochain: stopped after {} new points as asked; continue with "
+                             "--resume\n", r.computed);
+    return 4;
+  }
+  for (const auto& p : r.points)
+    if (!p.converged) {
+      std::cerr << "mesochain: warning: some points did not converge within the step limit\n";
+      return 3;
+    }
+  return 0;
+}
+}  // namespace
+
+Command makeScanCommand() {
+  auto opts = std::make_shared<ScanOptions>();
+  auto sub = std::make_shared<CLI::App*>(nullptr);
+  Command c;
+  c.attach = [opts, sub](CLI::App& app) {
+    auto* s = app.add_subcommand("scan", "deformation scan (stretch, twist, bend) of a cell");
+    s->add_option("scan", opts->scanFile, "scan input file (TOML, docs/scan-file.md)")->required();
+    s->add_flag("--resume", opts->resume,
+                "continue from the checkpoint of the scan file (refused if the input changed)");
+    s->add_option("--stop-after", opts->stopAfter,
+                  "compute at most N new points, then stop (resume later with --resume)");
+    *sub = s;
+  };
+  c.selected = [sub] { return *sub && (*sub)->parsed(); };
+  c.run = [opts] { return runScanCommand(*opts); };
+  return c;
+}
+
+}  // namespace mesochain::app

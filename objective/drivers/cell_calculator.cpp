@@ -1,0 +1,38 @@
+#include "objective/drivers/cell_calculator.hpp"
+
+namespace mesochain::objective {
+
+std::shared_ptr<const dftb::ParameterSet> loadParameters(const CellInput& in) {
+  return std::make_shared<const dftb::ParameterSet>(dftb::ParameterSet::load(
+      in.cell.speciesNames, in.parameterFiles, in.source, in.maxAngularMomentum));
+}
+
+dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
+  dftb::CalculatorSettings s;
+  s.band.helicalKPoints = in.helicalKPoints;
+  s.band.angular = in.angular;
+  s.band.electronicTemperature = in.electronicTemperature;
+  if (in.dispersion.model == "lj") {
+    s.dispersion.enabled = true;
+    s.dispersion.epsilon = in.dispersion.epsilon;
+    s.dispersion.r0 = in.dispersion.r0;
+    s.dispersion.cutoff = in.dispersion.cutoff;
+    s.dispersion.ewald = in.dispersion.summation == "ewald";
+    s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
+  }
+  s.scc.enabled = in.scc.enabled;
+  s.scc.chargeTolerance = in.scc.chargeTolerance;
+  s.scc.energyTolerance = in.scc.energyTolerance;
+  s.scc.maxIterations = in.scc.maxIterations;
+  s.scc.mixer = in.scc.mixer;
+  s.scc.mixing = in.scc.mixing;
+  s.scc.ewaldTolerance = in.scc.ewaldTolerance;
+  s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
+  return s;
+}
+
+dftb::Calculator makeCalculator(const CellInput& in) {
+  return dftb::Calculator(loadParameters(in), calculatorSettings(in));
+}
+
+}  // namespace mesochain::objective

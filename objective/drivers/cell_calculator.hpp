@@ -1,0 +1,15 @@
+#pragma once
+// The dftb::Calculator a cell file asks for: its parameter tables, k-points, electronic
+// temperature and dispersion (shared by `mesochain run`, `mesochain scan` and benchmarks).
+#include <memory>
+
+#include "dftb/calculator.hpp"
+#include "objective/core/cell_file.hpp"
+
+namespace mesochain::objective {
+
+std::shared_ptr<const dftb::ParameterSet> loadParameters(const CellInput& input);
+dftb::CalculatorSettings calculatorSettings(const CellInput& input);
+dftb::Calculator makeCalculator(const CellInput& input);
+
+}  // namespace mesochain::objective

@@ -1,0 +1,287 @@
+#include "objective/drivers/scan.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/progress_bar.hpp"
+#include "common/units.hpp"
+#include "objective/core/collapsed_tube_builder.hpp"
+#include "objective/core/kgrid.hpp"
+#include "objective/drivers/scan_checkpoint.hpp"
+
+namespace mesochain::objective {
+
+const char* scanKindName(ScanKind kind) {
+  switch (kind) {
+    case ScanKind::Stretch: return "stretch";
+    case ScanKind::Twist: return "twist";
+    case ScanKind::Bend: return "bend";
+  }
+  return "?";
+}
+
+const char* deformationUnit(ScanKind kind) {
+  switch (kind) {
+    case ScanKind::Stretch: return "strain";
+    case ScanKind::Twist: return "rad_per_cell";
+    case ScanKind::Bend: return "per_bohr";
+  }
+  return "?";
+}
+
+const char* bendDirectionName(BendDirection d) { return d == BendDirection::Soft ? "soft" : "hard"; }
+
+namespace {
+
+const char* kSource = "<scan>";
+
+// One planned point: its deformation, the value that sets the symmetry, and the plan index of
+// the point whose relaxed atoms start it (-1 for the reference).
+struct PlanEntry {
+  double deformation = 0.0;
+  double value = 0.0;  // strain or twist change (rad); unused for bend
+  int rotationOrder = 0;
+  int from = -1;
+};
+
+std::vector<PlanEntry> makePlan(const ScanSettings& s, double t0) {
+  std::vector<PlanEntry> plan{{0.0, 0.0, 0, -1}};
+  if (s.kind == ScanKind::Bend) {
+    if (s.rotationOrders.empty())
+      throw InputError(kSource, "rotation orders", "an empty list", "at least one ring order N_a");
+    std::vector<int> orders = s.rotationOrders;
+    std::sort(orders.rbegin(), orders.rend());
+    for (std::size_t k = 0; k < orders.size(); ++k) {
+      if (orders[k] < 2)
+        throw InputError(kSource, "rotation orders", std::to_string(orders[k]),
+                         "ring orders N_a >= 2");
+      if (k > 0 && orders[k] == orders[k - 1])
+        throw InputError(kSource, "rotation orders", fmt::format("{} twice", orders[k]),
+                         "distinct ring orders");
+      const double radius = orders[k] * t0 / (2 * units::kPi);
+      plan.push_back({1.0 / radius, 0.0, orders[k], static_cast<int>(plan.size()) - 1});
+    }
+    return plan;
+  }
+  if (s.values.empty())
+    throw InputError(kSource, s.kind == ScanKind::Stretch ? "strains" : "twists", "an empty list",
+                     "at least one deformation");
+  std::vector<double> pos, neg;
+  std::set<double> seen;
+  for (double v : s.values) {
+    if (!std::isfinite(v) || (s.kind == ScanKind::Stretch && !(v > -1.0)))
+      throw InputError(kSource, s.kind == ScanKind::Stretch ? "strains" : "twists",
+                       fmt::format("{}", v),
+                       s.kind == ScanKind::Stretch ? "finite strains > -1" : "finite twists");
+    if (!seen.insert(v).second)
+      throw InputError(kSource, s.kind == ScanKind::Stretch ? "strains" : "twists",
+                       fmt::format("{} twice", v), "distinct deformations");
+    if (v > 0) pos.push_back(v);
+    if (v < 0) neg.push_back(v);  // 0 is the reference itself
+  }
+  std::sort(pos.begin(), pos.end());
+  std::sort(neg.rbegin(), neg.rend());
+  for (const auto* side : {&pos, &neg}) {
+    int from = 0;
+    for (double v : *side) {
+      plan.push_back({v, v, 0, from});
+      from = static_cast<int>(plan.size()) - 1;
+    }
+  }
+  return plan;
+}
+
+// FNV-1a, 64 bit (Fowler, Noll & Vo).
+std::string fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+// The warm-start cell of a point from the relaxed cell of its neighbour.
+ObjectiveCell startingCell(const ScanSettings& s, const PlanEntry& e, const ScanPoint& from,
+                           const ScanPoint& reference, double t0, double gamma0) {
+  if (s.kind == ScanKind::Bend) {
+    if (e.from == 0)
+      return straightToRing(reference.cell, bendFrame(reference.cell, s.direction),
+                            e.rotationOrder);
+    const double rFrom = from.rotationOrder * t0 / (2 * units::kPi);
+    return straightToRing(ringToStraight(from.cell, rFrom), BendFrame{}, e.rotationOrder);
+  }
+  ObjectiveCell c = from.cell;
+  const Symmetry& sym = c.symmetry;
+  if (s.kind == ScanKind::Stretch) {
+    const double t = t0 * (1.0 + e.value);
+    c.positions.row(2) *= t / sym.translation();
+    c.symmetry = Symmetry::screw(t, gamma0, sym.rotationOrder());
+  } else {
+    const double g = gamma0 + e.value;
+    const double dg = g - sym.twist();
+    for (int a = 0; a < c.atomCount(); ++a) {
+      const Eigen::Vector3d x = c.positions.col(a);
+      c.positions.col(a) = rotationZ(dg * x.z() / sym.translation()) * x;
+    }
+    c.symmetry = Symmetry::screw(sym.translation(), g, sym.rotationOrder());
+  }
+  return c;
+}
+
+}  // namespace
+
+std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
+                          const ScanSettings& s) {
+  std::string t = "mesochain-scan-1\n";
+  t += fmt::format("kind {} direction {}\n", scanKindName(s.kind), bendDirectionName(s.direction));
+  for (double v : s.values) t += fmt::format("value {:.17g}\n", v);
+  for (int n : s.rotationOrders) t += fmt::format("order {}\n", n);
+  const RelaxSettings& r = s.relax;
+  t += fmt::format("relax {} {:.17g} {} {} {:.17g} {} {:.17g}\n", static_cast<int>(r.algorithm),
+                   r.forceTolerance, r.maxSteps, r.relaxTranslation, r.axialTolerance,
+                   r.maxTranslationSteps, r.maxDisplacement);
+  t += fmt::format("ring angular {}\n", s.ringAngular.samples);
+  t += fmt::format("band {} {} {:.17g}\n", c.band.helicalKPoints, c.band.angular.samples,
+                   c.band.electronicTemperature);
+  t += fmt::format("dispersion {} {:.17g} {:.17g} {:.17g}\n", c.dispersion.enabled,
+                   c.dispersion.epsilon, c.dispersion.r0, c.dispersion.cutoff);
+  t += fmt::format("symmetry {:.17g} {:.17g} {}\n", cell.symmetry.translation(),
+                   cell.symmetry.twist(), cell.symmetry.rotationOrder());
+  for (int a = 0; a < cell.atomCount(); ++a)
+    t += fmt::format("{} {:.17g} {:.17g} {:.17g}\n", cell.speciesOf(a), cell.positions(0, a),
+                     cell.positions(1, a), cell.positions(2, a));
+  t += "identity " + s.identity + "\n";
+  return fnv1a(t);
+}
+
+ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
+                   const dftb::CalculatorSettings& calcSettings, const ScanSettings& s) {
+  if (s.kind == ScanKind::Bend && (cell.symmetry.isRing() || cell.symmetry.rotationOrder() != 1 ||
+                                   std::abs(cell.symmetry.twist()) > 1e-12))
+    throw InputError(kSource, "the cell of a bend scan",
+                     fmt::format("rotation order {}, twist {:.6g} rad{}",
+                                 cell.symmetry.rotationOrder(), cell.symmetry.twist(),
+                                 cell.symmetry.isRing() ? ", a ring" : ""),
+                     "a straight translational cell (twist 0, rotation order 1)");
+  if (cell.symmetry.isRing())
+    throw InputError(kSource, "the cell of a scan", "a closed ring (translation 0)",
+                     "a straight cell (translation > 0)");
+  ScanResult out;
+  out.kind = s.kind;
+  out.direction = s.direction;
+  out.atomsPerCell = cell.atomCount();
+  out.inputHash = scanInputHash(cell, calcSettings, s);
+  // Validates the lists before any work. The plan's curvatures need T0: the input's until the
+  // reference is relaxed (or restored).
+  std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation());
+
+  const dftb::Calculator straightCalc(params, calcSettings);
+  dftb::CalculatorSettings ringSettings = calcSettings;
+  ringSettings.band.helicalKPoints = 1;
+  ringSettings.band.angular = s.ringAngular;
+  const dftb::Calculator ringCalc(params, ringSettings);
+
+  ScanCheckpoint checkpoint;
+  checkpoint.inputHash = out.inputHash;
+  checkpoint.kind = s.kind;
+  std::error_code ec;
+  if (s.resume && !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath, ec)) {
+    ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
+    if (old.inputHash != out.inputHash)
+      throw InputError(s.checkpointPath, "key input_hash",
+                       fmt::format("a checkpoint of another scan input (hash {}, this input {})",
+                                   old.inputHash, out.inputHash),
+                       "the checkpoint of this scan: remove it or run without --resume to start "
+                       "afresh");
+    checkpoint.completed = std::move(old.completed);
+  }
+
+  std::map<int, ScanPoint>& done = checkpoint.completed;
+  auto relaxPoint = [&](const PlanEntry& e, ObjectiveCell start, bool reference,
+                        ProgressBar& bar, int index, int total) {
+    const bool ring = start.symmetry.isRing();
+    const dftb::Calculator& calc = ring ? ringCalc : straightCalc;
+    RelaxSettings rs = s.relax;
+    rs.relaxTranslation = reference && s.relax.relaxTranslation;
+    const auto userProgress = s.relax.progress;
+    rs.progress = [&, userProgress, index, total](int step, double f, double fmax) {
+      if (userProgress) userProgress(step, f, fmax);
+      bar.update(index, fmt::format("point {}/{}: evaluation {} max|force| {:.1e}", index + 1,
+                                    total, step, fmax));
+    };
+    const auto t0 = std::chrono::steady_clock::now();
+    RelaxOutcome o = relax(calc, std::move(start), rs);
+    ScanPoint p;
+    p.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    p.deformation = e.deformation;
+    p.rotationOrder = e.rotationOrder;
+    p.energy = o.result.freeEnergy;
+    p.converged = o.converged;
+    p.maxForce = maxForce(o.result.gradient);
+    p.evaluations = o.evaluations;
+    const auto& band = calc.settings().band;
+    p.helicalKPoints = ring ? 1 : band.helicalKPoints;
+    p.angularPoints =
+        HelicalKGrid(o.cell.symmetry, p.helicalKPoints, band.angular).angularCount();
+    if (ring) p.measuredCurvature = 1.0 / meanRingRadius(o.cell);
+    p.cell = std::move(o.cell);
+    return p;
+  };
+
+  ProgressBar bar(fmt::format("scan {}", scanKindName(s.kind)), static_cast<int>(plan.size()));
+  if (!s.progressBar) bar.finish();
+  bar.skip(static_cast<int>(done.size()));
+  int computed = 0;
+  const int total = static_cast<int>(plan.size());
+  for (int k = 0; k < total; ++k) {
+    if (!done.count(k)) {
+      if (s.stopAfter >= 0 && computed >= s.stopAfter) break;
+      bar.update(k, fmt::format("point {}/{}", k + 1, total));
+      if (k == 0) {
+        done[0] = relaxPoint(plan[0], cell, true, bar, k, total);
+      } else {
+        const ScanPoint& ref = done.at(0);
+        const ObjectiveCell start =
+            startingCell(s, plan[k], done.at(plan[k].from), ref, ref.cell.symmetry.translation(),
+                         ref.cell.symmetry.twist());
+        done[k] = relaxPoint(plan[k], start, false, bar, k, total);
+      }
+      ++computed;
+      checkpoint.planSize = total;
+      if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
+      bar.update(k + 1);
+    }
+    // Bend curvatures 1/R = 2 pi / (N_a T0) follow T0 of the relaxed reference.
+    if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation());
+  }
+  bar.finish();
+
+  out.computed = computed;
+  out.complete = static_cast<int>(done.size()) == static_cast<int>(plan.size());
+  if (done.count(0)) {
+    const ObjectiveCell& ref = done.at(0).cell;
+    out.translation0 = ref.symmetry.translation();
+    out.twist0 = ref.symmetry.twist();
+    out.cellsPerSlice = ref.symmetry.rotationOrder();
+    if (s.dimensionsInterlayer > 0) {
+      const CollapsedDimensions d = measureCollapsed(ref, s.dimensionsInterlayer);
+      out.thickness = d.thickness;
+      out.width = d.width;
+    }
+  }
+  for (auto& [k, p] : done) out.points.push_back(p);
+  std::sort(out.points.begin(), out.points.end(),
+            [](const ScanPoint& a, const ScanPoint& b) { return a.deformation < b.deformation; });
+  return out;
+}
+
+}  // namespace mesochain::objective

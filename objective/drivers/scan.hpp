@@ -1,0 +1,106 @@
+#pragma once
+// Deformation scans of an objective cell (stretch, twist, bend), every point relaxed at fixed
+// symmetry (objective/drivers/relax.hpp) and warm-started from its neighbour's relaxed atoms.
+//
+// The scan first relaxes the straight reference cell (optionally finding T0 where dF/dT = 0);
+// that is the point of deformation 0 of every curve. Then, in this order:
+//   stretch: T = T0 (1 + eps), twist = the cell's own twist gamma0; eps > 0 ascending from
+//            the reference, then eps < 0 descending (each from its neighbour nearer 0); the z
+//            coordinates are scaled affinely with T for the warm start.
+//   twist:   T = T0, twist = gamma0 + dgamma (rad per cell), same order; the warm start turns
+//            each atom about z by the change of twist times z / T0 (a uniform twist).
+//   bend:    rings of N_a cells (T = 0, rotation by 2 pi / N_a; objective/core/ring_map.hpp)
+//            with nominal radius R = N_a T0 / (2 pi) and nominal curvature 1/R; N_a descending
+//            (curvature ascending), the first ring from the straight reference, each next one
+//            unbent from its neighbour and rebent at the new radius. The measured curvature is
+//            1 / (mean distance of the relaxed atoms from the ring axis).
+// ScanPoint energies are Mermin free energies per objective cell (Hartree); for a ring, the
+// total ring energy / N_a, i.e. per cell of the straight reference (the same atoms), so curves
+// compare directly with the reference energy. The curve files (scan_output.hpp) multiply by
+// cellsPerSlice: energies per slice of length T0 (N_a objective cells of a helical cell with
+// rotation order N_a; one translational cell).
+//
+// A checkpoint (JSON) is written atomically (temporary file + rename) after every point; a scan
+// resumed from it skips the completed points (restoring their relaxed atoms for warm starts)
+// and refuses a checkpoint whose input hash differs from the current input.
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dftb/calculator.hpp"
+#include "objective/core/cell.hpp"
+#include "objective/core/ring_map.hpp"
+#include "objective/drivers/relax.hpp"
+
+namespace mesochain::objective {
+
+enum class ScanKind { Stretch, Twist, Bend };
+
+const char* scanKindName(ScanKind kind);          // "stretch" | "twist" | "bend"
+const char* deformationUnit(ScanKind kind);       // "strain" | "rad_per_cell" | "per_bohr"
+const char* bendDirectionName(BendDirection d);   // "soft" | "hard"
+
+struct ScanSettings {
+  ScanKind kind = ScanKind::Stretch;
+  BendDirection direction = BendDirection::Soft;  // bend only
+  std::vector<double> values;        // stretch: strains; twist: rad per cell (added to gamma0)
+  std::vector<int> rotationOrders;   // bend: N_a of the rings
+  RelaxSettings relax;               // per point; relax.relaxTranslation applies to the reference
+  AngularSampling ringAngular;       // angular quantum numbers of the rings (default: all)
+  // > 0: measure thickness and width of the relaxed reference (measureCollapsed) with this
+  // interlayer (Bohr); 0: a round cell, no dimensions reported.
+  double dimensionsInterlayer = 0.0;
+  // Free-form text that identifies the input beyond what the driver sees (e.g. parameter file
+  // paths); part of the input hash.
+  std::string identity;
+  std::string checkpointPath;        // empty: no checkpoint
+  bool resume = false;               // read checkpointPath (if it exists) and continue
+  int stopAfter = -1;                // >= 0: return after computing this many new points
+  bool progressBar = true;           // draw common/progress_bar on stderr (when a terminal)
+};
+
+struct ScanPoint {
+  double deformation = 0.0;  // strain, rad per cell, or nominal curvature (1/Bohr)
+  int rotationOrder = 0;     // bend: N_a of the ring (0 for the straight reference)
+  double energy = 0.0;       // Mermin free energy per cell, Hartree
+  bool converged = false;
+  double maxForce = 0.0;     // Hartree/Bohr at the final geometry
+  double timeSeconds = 0.0;
+  int helicalKPoints = 0;
+  int angularPoints = 0;
+  int evaluations = 0;
+  double measuredCurvature = std::numeric_limits<double>::quiet_NaN();  // bend, 1/Bohr
+  ObjectiveCell cell;        // the relaxed cell
+};
+
+struct ScanResult {
+  ScanKind kind = ScanKind::Stretch;
+  BendDirection direction = BendDirection::Soft;
+  double translation0 = 0.0;   // T0, Bohr
+  double twist0 = 0.0;         // the reference twist, rad per cell
+  int atomsPerCell = 0;        // atoms of the objective cell
+  // Objective cells in one slice of length T0: the reference's rotation order N_a (a helical
+  // cell with C_{N_a} holds 1/N_a of the slice). Curve files report energies per slice.
+  int cellsPerSlice = 1;
+  double thickness = std::numeric_limits<double>::quiet_NaN();  // Bohr (when measured)
+  double width = std::numeric_limits<double>::quiet_NaN();
+  std::vector<ScanPoint> points;  // sorted by deformation (reference included)
+  bool complete = false;          // false when stopped by stopAfter
+  int computed = 0;               // points computed in this call (not restored)
+  std::string inputHash;
+};
+
+// The scan of `cell` (a straight cell) with `params` and `calculator` settings. For bend, the
+// rings use one helical k-point and settings.ringAngular. Throws InputError for bad settings
+// (duplicate or empty deformation lists, strains <= -1, N_a < 2, a cell that cannot be bent)
+// or a mismatched checkpoint (naming the checkpoint file).
+ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
+                   const dftb::CalculatorSettings& calculator, const ScanSettings& settings);
+
+// The hash (16 hex digits, FNV-1a 64) of everything that determines the scan's results.
+std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& calculator,
+                          const ScanSettings& settings);
+
+}  // namespace mesochain::objective

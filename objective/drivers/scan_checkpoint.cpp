@@ -1,0 +1,129 @@
+#include "objective/drivers/scan_checkpoint.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+
+namespace mesochain::objective {
+
+using nlohmann::json;
+
+namespace {
+
+json pointJson(int index, const ScanPoint& p) {
+  json j;
+  j["index"] = index;
+  j["deformation"] = p.deformation;
+  j["rotation_order"] = p.rotationOrder;
+  j["energy_hartree"] = p.energy;
+  j["converged"] = p.converged;
+  j["max_force_hartree_per_bohr"] = p.maxForce;
+  j["time_s"] = p.timeSeconds;
+  j["helical_kpoints"] = p.helicalKPoints;
+  j["angular_points"] = p.angularPoints;
+  j["evaluations"] = p.evaluations;
+  j["measured_curvature_per_bohr"] =
+      std::isnan(p.measuredCurvature) ? json(nullptr) : json(p.measuredCurvature);
+  const Symmetry& s = p.cell.symmetry;
+  j["cell"] = {{"translation_bohr", s.translation()},
+               {"twist_rad", s.twist()},
+               {"symmetry_rotation_order", s.rotationOrder()}};
+  json pos = json::array();
+  for (int a = 0; a < p.cell.atomCount(); ++a)
+    pos.push_back({p.cell.positions(0, a), p.cell.positions(1, a), p.cell.positions(2, a)});
+  j["cell"]["positions_bohr"] = pos;
+  return j;
+}
+
+}  // namespace
+
+void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& c,
+                         const ObjectiveCell& /*speciesSource*/) {
+  json j;
+  j["format"] = 1;
+  j["what"] = "mesochain scan checkpoint";
+  j["input_hash"] = c.inputHash;
+  j["kind"] = scanKindName(c.kind);
+  j["plan_size"] = c.planSize;
+  j["completed"] = json::array();
+  for (const auto& [index, p] : c.completed) j["completed"].push_back(pointJson(index, p));
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::trunc);
+    if (!f) throw InputError(tmp, "cannot open the checkpoint file for writing");
+    f << j.dump(1) << "\n";
+    f.flush();
+    if (!f) throw InputError(tmp, "cannot write the checkpoint file (disk full?)");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError(path, "cannot rename " + tmp + " to the checkpoint: " + ec.message());
+}
+
+ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& speciesSource) {
+  std::ifstream f(path);
+  if (!f) throw InputError(path, "cannot open the checkpoint file");
+  json j;
+  try {
+    j = json::parse(f);
+  } catch (const std::exception& e) {
+    throw InputError(path, "the whole file", std::string("invalid JSON (") + e.what() + ")",
+                     "a checkpoint written by mesochain scan");
+  }
+  const auto bad = [&](const std::string& where, const std::string& found) {
+    throw InputError(path, where, found, "a checkpoint written by mesochain scan (format 1)");
+  };
+  if (!j.is_object() || j.value("what", "") != "mesochain scan checkpoint")
+    bad("key what", "another kind of JSON file");
+  if (j.value("format", 0) != 1) bad("key format", j["format"].dump());
+  ScanCheckpoint c;
+  try {
+    c.inputHash = j.at("input_hash").get<std::string>();
+    const std::string kind = j.at("kind").get<std::string>();
+    c.kind = kind == "stretch" ? ScanKind::Stretch
+             : kind == "twist" ? ScanKind::Twist
+             : kind == "bend"  ? ScanKind::Bend
+                               : (bad("key kind", kind), ScanKind::Stretch);
+    c.planSize = j.at("plan_size").get<int>();
+    for (const json& e : j.at("completed")) {
+      ScanPoint p;
+      const int index = e.at("index").get<int>();
+      p.deformation = e.at("deformation").get<double>();
+      p.rotationOrder = e.at("rotation_order").get<int>();
+      p.energy = e.at("energy_hartree").get<double>();
+      p.converged = e.at("converged").get<bool>();
+      p.maxForce = e.at("max_force_hartree_per_bohr").get<double>();
+      p.timeSeconds = e.at("time_s").get<double>();
+      p.helicalKPoints = e.at("helical_kpoints").get<int>();
+      p.angularPoints = e.at("angular_points").get<int>();
+      p.evaluations = e.at("evaluations").get<int>();
+      const json& mc = e.at("measured_curvature_per_bohr");
+      p.measuredCurvature = mc.is_null() ? std::nan("") : mc.get<double>();
+      const json& cj = e.at("cell");
+      const json& pos = cj.at("positions_bohr");
+      if (static_cast<int>(pos.size()) != speciesSource.atomCount())
+        bad(fmt::format("point {}", index),
+            fmt::format("{} atoms instead of {}", pos.size(), speciesSource.atomCount()));
+      p.cell.speciesNames = speciesSource.speciesNames;
+      p.cell.species = speciesSource.species;
+      p.cell.positions.resize(3, speciesSource.atomCount());
+      for (int a = 0; a < speciesSource.atomCount(); ++a)
+        for (int k = 0; k < 3; ++k) p.cell.positions(k, a) = pos.at(a).at(k).get<double>();
+      p.cell.symmetry = Symmetry::fromParameters(cj.at("translation_bohr").get<double>(),
+                                                 cj.at("twist_rad").get<double>(),
+                                                 cj.at("symmetry_rotation_order").get<int>(),
+                                                 path.c_str());
+      c.completed[index] = std::move(p);
+    }
+  } catch (const json::exception& e) {
+    bad("its contents", std::string("a missing or mistyped entry (") + e.what() + ")");
+  }
+  return c;
+}
+
+}  // namespace mesochain::objective

@@ -1,0 +1,181 @@
+#include "objective/drivers/scan_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+#include "objective/core/toml_table.hpp"
+
+namespace mesochain::objective {
+
+namespace fs = std::filesystem;
+using detail::TomlTable;
+
+namespace {
+
+std::vector<double> numberList(const TomlTable& t, const std::string& key,
+                               const std::string& expected) {
+  const toml::value& v = t.at(key);
+  if (!v.is_array() || v.as_array().empty()) t.fail(key, detail::describe(v), expected);
+  std::vector<double> out;
+  for (const toml::value& e : v.as_array()) {
+    const auto x = detail::asNumber(e);
+    if (!x || !std::isfinite(*x)) t.fail(key, "an entry " + detail::describe(e), expected);
+    out.push_back(*x);
+  }
+  return out;
+}
+
+std::string relativeTo(const std::string& scanFile, const std::string& path) {
+  return (fs::path(scanFile).parent_path() / path).lexically_normal().string();
+}
+
+// The parameter tables by content size and path: part of the input hash, so a checkpoint made
+// with other tables is refused.
+std::string identityOf(const CellInput& cell) {
+  std::string s;
+  for (const auto& [pair, file] : cell.parameterFiles) {
+    std::error_code ec;
+    s += fmt::format("table {} {} {}\n", pair, file, fs::file_size(file, ec));
+  }
+  return s;
+}
+
+}  // namespace
+
+ScanInput readScanFile(const std::string& path) {
+  ScanInput in;
+  in.source = path;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(path, "the scan file does not exist or is not a regular file");
+  toml::value data;
+  try {
+    data = toml::parse(path);
+  } catch (const toml::syntax_error& e) {
+    throw InputError(path, fmt::format("line {}", e.location().line()), "invalid TOML",
+                     std::string("valid TOML (") + e.what() + ")");
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("the file cannot be read as TOML: ") + e.what());
+  }
+  const TomlTable root(path, data, "");
+  root.allowOnly({"format", "cell", "kind", "strains", "twist_deg_per_cell", "rotation_orders",
+                  "direction", "ring_angular", "relax", "dimensions", "output"});
+  const long format = root.integer("format", "format = 1");
+  if (format != 1) root.fail("format", std::to_string(format), "format = 1");
+
+  const std::string cellFile = root.string("cell", "the path of an objective-cell file (TOML)");
+  const std::string cellPath = relativeTo(path, cellFile);
+  if (!fs::is_regular_file(cellPath, ec))
+    root.fail("cell", "\"" + cellFile + "\", which does not exist (looked for " + cellPath + ")",
+              "an existing cell file (the path is relative to the scan file)");
+  in.cell = readCellFile(cellPath);
+
+  ScanSettings& s = in.settings;
+  const std::string kind = root.string("kind", "\"stretch\", \"twist\" or \"bend\"");
+  const std::vector<std::pair<std::string, std::string>> listKeys = {
+      {"stretch", "strains"}, {"twist", "twist_deg_per_cell"}, {"bend", "rotation_orders"}};
+  std::string listKey;
+  for (const auto& [k, key] : listKeys)
+    if (k == kind) listKey = key;
+  if (listKey.empty()) root.fail("kind", "\"" + kind + "\"", "\"stretch\", \"twist\" or \"bend\"");
+  for (const auto& [k, key] : listKeys)
+    if (key != listKey && root.has(key))
+      root.fail(key, key + " with kind = \"" + kind + "\"", listKey + " (the list of this kind)");
+  if (!root.has(listKey)) root.missing(listKey, "the list of deformations of this scan");
+  if (kind != "bend")
+    for (const char* key : {"direction", "ring_angular"})
+      if (root.has(key)) root.fail(key, std::string(key) + " with kind = \"" + kind + "\"",
+                                   "direction and ring_angular only with kind = \"bend\"");
+  if (kind == "stretch") {
+    s.kind = ScanKind::Stretch;
+    s.values = numberList(root, "strains", "a non-empty array of strains (dimensionless, > -1)");
+  } else if (kind == "twist") {
+    s.kind = ScanKind::Twist;
+    for (double deg : numberList(root, "twist_deg_per_cell",
+                                 "a non-empty array of twist angles (degrees per cell)"))
+      s.values.push_back(deg * units::kDegree);
+  } else {
+    s.kind = ScanKind::Bend;
+    const char* expected = "a non-empty array of ring rotation orders N_a (integers >= 2)";
+    const toml::value& v = root.at("rotation_orders");
+    if (!v.is_array() || v.as_array().empty()) root.fail("rotation_orders", detail::describe(v), expected);
+    for (const toml::value& e : v.as_array()) {
+      if (!e.is_integer() || e.as_integer() < 2 || e.as_integer() > 100000000L)
+        root.fail("rotation_orders", "an entry " + detail::describe(e), expected);
+      s.rotationOrders.push_back(static_cast<int>(e.as_integer()));
+    }
+    const std::string dir = root.has("direction")
+                                ? root.string("direction", "\"soft\" or \"hard\"")
+                                : std::string("soft");
+    if (dir != "soft" && dir != "hard") root.fail("direction", "\"" + dir + "\"", "\"soft\" or \"hard\"");
+    s.direction = dir == "soft" ? BendDirection::Soft : BendDirection::Hard;
+    if (root.has("ring_angular")) {
+      const toml::value& a = root.at("ring_angular");
+      const char* exp = "\"all\" or a number of sampled angular quantum numbers >= 1";
+      if (a.is_string() && a.as_string().str == "all") {
+        s.ringAngular.samples = 0;
+      } else if (a.is_integer() && a.as_integer() >= 1 && a.as_integer() <= 1000000000L) {
+        s.ringAngular.samples = static_cast<int>(a.as_integer());
+      } else {
+        root.fail("ring_angular", detail::describe(a), exp);
+      }
+    }
+    if (in.cell.cell.symmetry.isRing() || in.cell.cell.symmetry.rotationOrder() != 1 ||
+        std::abs(in.cell.cell.symmetry.twist()) > 1e-12)
+      root.fail("cell", "a cell that is not a straight translational cell (" + cellFile + ")",
+                "for kind = \"bend\" a cell with twist 0 and rotation order 1 (e.g. [builder] "
+                "cell = \"translational\", or type = \"collapsed\")");
+  }
+  if (!s.values.empty() || !s.rotationOrders.empty()) {
+    if (in.cell.cell.symmetry.isRing())
+      root.fail("cell", "a closed ring (" + cellFile + ")", "a straight cell (translation > 0)");
+  }
+
+  s.relax.relaxTranslation = true;
+  if (const auto r = root.table("relax")) {
+    r->allowOnly({"force_tolerance", "max_steps", "relax_translation"});
+    if (r->has("force_tolerance")) {
+      s.relax.forceTolerance = r->number("force_tolerance", "a positive force (Ha/Bohr)");
+      if (!(s.relax.forceTolerance > 0))
+        r->fail("force_tolerance", fmt::format("{}", s.relax.forceTolerance), "a positive force (Ha/Bohr)");
+    }
+    if (r->has("max_steps")) {
+      const long n = r->integer("max_steps", "a positive integer");
+      if (n < 1 || n > 100000000L) r->fail("max_steps", std::to_string(n), "a positive integer");
+      s.relax.maxSteps = static_cast<int>(n);
+    }
+    if (r->has("relax_translation"))
+      s.relax.relaxTranslation = r->boolean("relax_translation", "true or false");
+  }
+  s.relax.axialTolerance = s.relax.forceTolerance;
+
+  if (const auto d = root.table("dimensions")) {
+    d->allowOnly({"measure", "interlayer"});
+    const bool measure = d->has("measure") && d->boolean("measure", "true or false");
+    double interlayer = kDefaultCollapseInterlayerAngstrom;
+    if (d->has("interlayer")) {
+      interlayer = d->number("interlayer", "a positive interlayer distance (Å)");
+      if (!(interlayer > 0)) d->fail("interlayer", fmt::format("{} Å", interlayer), "a positive distance (Å)");
+    }
+    if (measure) s.dimensionsInterlayer = interlayer * units::kAngstromInBohr;
+  }
+
+  const auto o = root.table("output");
+  if (!o) root.missing("output", "a table [output] with json = \"curve.json\" (and csv, checkpoint)");
+  o->allowOnly({"json", "csv", "checkpoint", "structures"});
+  in.jsonPath = relativeTo(path, o->string("json", "the path of the curve JSON"));
+  if (o->has("csv")) in.csvPath = relativeTo(path, o->string("csv", "the path of the curve CSV"));
+  if (o->has("checkpoint"))
+    s.checkpointPath = relativeTo(path, o->string("checkpoint", "the path of the checkpoint (JSON)"));
+  if (o->has("structures"))
+    in.structurePrefix = relativeTo(path, o->string("structures", "a path prefix for the relaxed cells"));
+  s.identity = identityOf(in.cell);
+  return in;
+}
+
+}  // namespace mesochain::objective

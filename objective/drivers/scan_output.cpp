@@ -1,0 +1,73 @@
+#include "objective/drivers/scan_output.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+
+namespace mesochain::objective {
+
+using nlohmann::json;
+
+json scanCurveJson(const ScanResult& r) {
+  json j;
+  j["format"] = 1;
+  j["kind"] = scanKindName(r.kind);
+  if (r.kind == ScanKind::Bend) j["direction"] = bendDirectionName(r.direction);
+  j["T0_bohr"] = r.translation0;
+  j["atoms_per_cell"] = r.atomsPerCell * r.cellsPerSlice;
+  if (!std::isnan(r.thickness)) j["thickness_bohr"] = r.thickness;
+  if (!std::isnan(r.width)) j["width_bohr"] = r.width;
+  j["deformation_unit"] = deformationUnit(r.kind);
+  j["points"] = json::array();
+  for (const ScanPoint& p : r.points) {
+    json q;
+    q["deformation"] = p.deformation;
+    q["energy_hartree"] = p.energy * r.cellsPerSlice;
+    q["converged"] = p.converged;
+    q["max_force_hartree_per_bohr"] = p.maxForce;
+    q["time_s"] = p.timeSeconds;
+    q["helical_kpoints"] = p.helicalKPoints;
+    q["angular_points"] = p.angularPoints;
+    q["evaluations"] = p.evaluations;
+    // The straight reference of a bend curve has curvature 0, measured and nominal.
+    if (r.kind == ScanKind::Bend)
+      q["measured_curvature_per_bohr"] = std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature;
+    j["points"].push_back(q);
+  }
+  return j;
+}
+
+std::string scanCurveCsv(const ScanResult& r) {
+  const bool bend = r.kind == ScanKind::Bend;
+  std::string s =
+      "deformation,energy_hartree,converged,max_force_hartree_per_bohr,time_s,helical_kpoints,"
+      "angular_points,evaluations";
+  s += bend ? ",measured_curvature_per_bohr\n" : "\n";
+  for (const ScanPoint& p : r.points) {
+    s += fmt::format("{:.17g},{:.17g},{},{:.6e},{:.3f},{},{},{}", p.deformation, p.energy * r.cellsPerSlice,
+                     p.converged ? "true" : "false", p.maxForce, p.timeSeconds, p.helicalKPoints,
+                     p.angularPoints, p.evaluations);
+    if (bend)
+      s += fmt::format(",{:.17g}", std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature);
+    s += "\n";
+  }
+  return s;
+}
+
+void writeScanCurve(const ScanResult& r, const std::string& jsonPath, const std::string& csvPath) {
+  if (!jsonPath.empty()) {
+    std::ofstream f(jsonPath);
+    if (!f) throw InputError(jsonPath, "cannot open the scan JSON output for writing");
+    f << scanCurveJson(r).dump(2) << "\n";
+  }
+  if (!csvPath.empty()) {
+    std::ofstream f(csvPath);
+    if (!f) throw InputError(csvPath, "cannot open the scan CSV output for writing");
+    f << scanCurveCsv(r);
+  }
+}
+
+}  // namespace mesochain::objective

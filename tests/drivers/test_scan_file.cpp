@@ -1,0 +1,119 @@
+// The scan file: units are converted (degrees -> rad), paths are relative to the scan file,
+// and bad input is an InputError naming the file and the key. Also the progress bar's text.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "common/progress_bar.hpp"
+#include "common/units.hpp"
+#include "objective/drivers/scan_file.hpp"
+
+using namespace mesochain;
+using namespace mesochain::objective;
+
+namespace {
+const std::string kDir = (std::filesystem::temp_directory_path() / "mesochain-scan-file").string();
+
+std::string write(const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(kDir);
+  const std::string p = kDir + "/" + name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+void writeCells() {
+  write("helical.toml",
+        "format = 1\n[builder]\ntype = \"nanotube\"\nn = 5\nm = 5\ncell = \"helical\"\n"
+        "[kpoints]\nhelical = 8\n[electrons]\ntemperature = 300\n[parameters]\nset = \"pbc-0-3\"\n");
+  write("straight.toml",
+        "format = 1\n[builder]\ntype = \"nanotube\"\nn = 6\nm = 0\ncell = \"translational\"\n"
+        "[kpoints]\nhelical = 8\n[electrons]\ntemperature = 300\n[parameters]\nset = \"pbc-0-3\"\n");
+}
+
+// Expects an InputError whose message names the scan file and contains `key`.
+void expectError(const std::string& text, const std::string& key) {
+  const std::string p = write("bad.toml", text);
+  try {
+    readScanFile(p);
+    FAIL() << "accepted: " << text;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(ScanFile, ReadsTwistAndBendWithUnits) {
+  writeCells();
+  const ScanInput t = readScanFile(write(
+      "twist.toml",
+      "format = 1\ncell = \"helical.toml\"\nkind = \"twist\"\ntwist_deg_per_cell = [0.5, -1]\n"
+      "[relax]\nforce_tolerance = 2e-5\nrelax_translation = false\n"
+      "[output]\njson = \"out/t.json\"\ncheckpoint = \"t.ckpt\"\n"));
+  EXPECT_EQ(t.settings.kind, ScanKind::Twist);
+  ASSERT_EQ(t.settings.values.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.settings.values[0], 0.5 * units::kDegree);
+  EXPECT_DOUBLE_EQ(t.settings.values[1], -units::kDegree);
+  EXPECT_DOUBLE_EQ(t.settings.relax.forceTolerance, 2e-5);
+  EXPECT_FALSE(t.settings.relax.relaxTranslation);
+  EXPECT_EQ(t.jsonPath, kDir + "/out/t.json");
+  EXPECT_EQ(t.settings.checkpointPath, kDir + "/t.ckpt");
+  EXPECT_EQ(t.cell.cell.atomCount(), 2);
+  const ScanInput b = readScanFile(write(
+      "bend.toml",
+      "format = 1\ncell = \"straight.toml\"\nkind = \"bend\"\nrotation_orders = [400, 200]\n"
+      "direction = \"hard\"\nring_angular = 8\n[dimensions]\nmeasure = true\ninterlayer = 3.35\n"
+      "[output]\njson = \"b.json\"\ncsv = \"b.csv\"\n"));
+  EXPECT_EQ(b.settings.kind, ScanKind::Bend);
+  EXPECT_EQ(b.settings.direction, BendDirection::Hard);
+  EXPECT_EQ(b.settings.rotationOrders, (std::vector<int>{400, 200}));
+  EXPECT_EQ(b.settings.ringAngular.samples, 8);
+  EXPECT_TRUE(b.settings.relax.relaxTranslation);  // the default
+  EXPECT_NEAR(b.settings.dimensionsInterlayer, 3.35 * units::kAngstromInBohr, 1e-12);
+  EXPECT_TRUE(b.settings.checkpointPath.empty());
+}
+
+TEST(ScanFile, BadInputNamesFileAndKey) {
+  writeCells();
+  const std::string head = "format = 1\ncell = \"helical.toml\"\n";
+  const std::string out = "[output]\njson = \"x.json\"\n";
+  expectError(head + "kind = \"squeeze\"\nstrains = [0.1]\n" + out, "kind");
+  expectError(head + "kind = \"stretch\"\n" + out, "strains");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1, \"a\"]\n" + out, "strains");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\ntwist_deg_per_cell = [1]\n" + out,
+              "twist_deg_per_cell");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\ndirection = \"soft\"\n" + out,
+              "direction");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n", "output");
+  expectError("format = 1\ncell = \"nope.toml\"\nkind = \"stretch\"\nstrains = [0.1]\n" + out,
+              "cell");
+  // Bending needs a straight translational cell; the helical (5,5) cell has a twist.
+  expectError(head + "kind = \"bend\"\nrotation_orders = [100]\n" + out, "cell");
+  const std::string straight = "format = 1\ncell = \"straight.toml\"\nkind = \"bend\"\n";
+  expectError(straight + "rotation_orders = [1]\n" + out, "rotation_orders");
+  expectError(straight + "rotation_orders = [100]\ndirection = \"sideways\"\n" + out,
+              "direction");
+  expectError(straight + "rotation_orders = [100]\nring_angular = 0\n" + out, "ring_angular");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n[relax]\nforce_tolerance = -1\n" + out,
+              "force_tolerance");
+}
+
+TEST(ProgressBar, RendersCountsTimesAndNote) {
+  EXPECT_EQ(ProgressBar::formatDuration(0), "0:00");
+  EXPECT_EQ(ProgressBar::formatDuration(75.4), "1:15");
+  EXPECT_EQ(ProgressBar::formatDuration(3725), "1:02:05");
+  EXPECT_EQ(ProgressBar::formatDuration(-1), "--:--");
+  EXPECT_EQ(ProgressBar::render("scan", 2, 8, 30, 90, "point 3", 8),
+            "scan [##......] 2/8  elapsed 0:30  ETA 1:30  point 3");
+  EXPECT_EQ(ProgressBar::render("x", 8, 8, 5, 0, "", 4), "x [####] 8/8  elapsed 0:05  ETA 0:00");
+}
+
+TEST(ProgressBar, SilentUnderCi) {
+  setenv("CI", "true", 1);
+  EXPECT_FALSE(progressOutputEnabled());
+  ProgressBar bar("quiet", 3);
+  EXPECT_FALSE(bar.enabled());
+  unsetenv("CI");
+}
