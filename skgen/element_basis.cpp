@@ -16,6 +16,7 @@ AtomSettings atomSettings(const Element& e, const ElementSettings& s, XcKind xc,
     a.shells.push_back({sh.n, sh.l, {0.5 * sh.occupation, 0.5 * sh.occupation}});
   a.xc = xc;
   a.confinement = c;
+  a.slater = s.slater;
   a.h = s.h;
   a.rMax = s.rMax;
   return a;
@@ -62,6 +63,7 @@ ElementBasis buildElementBasis(const ElementSettings& s) {
     o.l = sh.l;
     const ShellSolution& ss = wf.shell(sh.n, sh.l);
     o.energy = ss.energy[0];
+    o.slater = ss.terms[0];
     o.grid = wf.grid;
     o.radial.resize(wf.grid.size());
     o.potential.resize(wf.grid.size());
