@@ -88,8 +88,18 @@ std::vector<SlaterState> SlaterRadialSolver::solve(const std::vector<double>& v,
   for (int i = 0; i < np; ++i) w[i] = v[i] * g.r[i] * g.r[i] * g.r[i] * g.h;
   w[0] *= 0.5;
   w[np - 1] *= 0.5;
-  const Eigen::MatrixXd h = t_ + chi_ * w.asDiagonal() * chi_.transpose();
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (h + h.transpose()), s_);
+  // row-by-row dot products: an Eigen matrix product here would be spread over OpenMP threads,
+  // which costs far more than it saves for a 12 x 2000 x 12 product on a shared machine
+  Eigen::MatrixXd h = t_;
+  for (int a = 0; a < n; ++a) {
+    const Eigen::RowVectorXd cw = chi_.row(a).cwiseProduct(w.transpose());
+    for (int b = 0; b <= a; ++b) {
+      const double vab = cw.dot(chi_.row(b));
+      h(a, b) += vab;
+      if (b != a) h(b, a) += vab;
+    }
+  }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(h, s_);
   if (es.info() != Eigen::Success)
     throw NumericalError(fmt::format(
         "Slater basis (l = {}): the generalized eigenproblem failed (overlap matrix not positive "
