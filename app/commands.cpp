@@ -8,9 +8,10 @@ Command makeDemCommand();
 Command makeBenchCommand();
 Command makeBuildCommand();
 Command makeBeamCommand();
+Command makeSkgenCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeBeamCommand(), makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(), makeBuildCommand(), makeBeamCommand(), makeSkgenCommand(), makeDemCommand(), makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

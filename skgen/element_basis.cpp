@@ -57,7 +57,7 @@ ElementBasis buildElementBasis(const ElementSettings& s) {
   for (std::size_t k = 0; k < e.valence.size(); ++k) {
     const ShellOccupation& sh = e.shells[e.valence[k]];
     const AtomSolution wf = solveAtom(atomSettings(e, s, s.xc, s.shells[k]));
-    requireBound(wf, s.shells[k], sh.n, sh.l, s.source, fmt::format("{}.confinement (shell {}{})", s.symbol,
+    requireBound(wf, s.shells[k], sh.n, sh.l, s.source, fmt::format("elements.{}.wavefunction (shell {}{})", s.symbol,
                                                        sh.n, "spdf"[sh.l]));
     TwoCentreOrbital o;
     o.l = sh.l;

@@ -13,6 +13,7 @@
 
 #include "dftb/skf_file.hpp"
 #include "skgen/element_basis.hpp"
+#include "pbc_recipe.hpp"
 
 using namespace mesochain::skgen;
 
@@ -63,15 +64,8 @@ TEST(PublishedCarbon, SlaterBackEndReproducesPbc03) {
   const nlohmann::json tol = nlohmann::json::parse(in);
   const auto t = mesochain::dftb::readSkfFile(
       std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/C-C.skf", true);
-  ElementSettings s;
-  s.symbol = "C";
-  s.xc = XcKind::Pbe;
-  s.hubbardXc = XcKind::LdaPw92;
-  s.density = Confinement::powerLaw(7.0, 2.0);
-  s.shells = {Confinement::powerLaw(2.7, 2.0), Confinement::powerLaw(2.7, 2.0)};
-  s.slater = {{0.50, 1.14, 2.62, 6.0}, tol["powers"].get<int>()};
-  s.h = 0.008;
-  const ElementBasis b = buildElementBasis(s);
+  ASSERT_EQ(tol["powers"].get<int>(), 3);
+  const ElementBasis& b = mesochain::testing::pbcCarbon();  // tests/skgen/pbc_recipe.hpp
   EXPECT_NEAR(b.data.onsite[0], t.onsite[0], tol["onsite_Ha"].get<double>());
   EXPECT_NEAR(b.data.onsite[1], t.onsite[1], tol["onsite_Ha"].get<double>());
   EXPECT_NEAR(b.data.hubbard[1], t.hubbard[1], tol["hubbard_Ha"].get<double>());

@@ -9,36 +9,15 @@
 #include "dftb/skf_file.hpp"
 #include "skgen/sk_table.hpp"
 #include "skgen/skf_writer.hpp"
+#include "pbc_recipe.hpp"
 
 using namespace mesochain;
 using namespace mesochain::skgen;
 
 namespace {
-ElementBasis pbcBasis(const std::string& symbol) {
-  ElementSettings s;
-  s.symbol = symbol;
-  s.xc = XcKind::Pbe;
-  s.hubbardXc = XcKind::LdaPw92;
-  s.h = 0.008;
-  if (symbol == "C") {
-    s.density = Confinement::powerLaw(7.0, 2.0);
-    s.shells = {Confinement::powerLaw(2.7, 2.0), Confinement::powerLaw(2.7, 2.0)};
-    s.slater = {{0.50, 1.14, 2.62, 6.0}, 3};
-  } else {
-    s.density = Confinement::powerLaw(2.5, 2.0);
-    s.shells = {Confinement::powerLaw(3.0, 2.0)};
-    s.slater = {{0.50, 1.0, 2.0}, 3};
-  }
-  return buildElementBasis(s);
-}
-const ElementBasis& carbon() {
-  static const ElementBasis b = pbcBasis("C");
-  return b;
-}
-const ElementBasis& hydrogen() {
-  static const ElementBasis b = pbcBasis("H");
-  return b;
-}
+using mesochain::testing::tempPath;
+const ElementBasis& carbon() { return mesochain::testing::pbcCarbon(); }
+const ElementBasis& hydrogen() { return mesochain::testing::pbcHydrogen(); }
 TableGrid coarseGrid() {
   TableGrid g;
   g.spacing = 0.4;
@@ -46,9 +25,6 @@ TableGrid coarseGrid() {
   g.quadrature.nXi = g.quadrature.nEta = 40;
   g.quadrature.rMax = 20.0;
   return g;
-}
-std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("mesochain-skgen-" + name)).string();
 }
 }  // namespace
 
