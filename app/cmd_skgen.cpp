@@ -49,8 +49,12 @@ Command makeSkgenCommand() {
     const std::vector<std::string> files = skgen::runSkgen(job, progress);
     if (!opt->quiet) std::fprintf(stderr, "\n");
     for (const std::string& f : files) std::cout << "wrote " << f << "\n";
-    std::cout << "skgen: " << files.size()
-              << " tables with the explicit zero repulsive (no repulsive fitted)\n";
+    int fitted = 0;
+    for (const auto& [a, b] : job.pairs)
+      for (const auto& r : job.repulsive)
+        if ((r.a == a && r.b == b) || (r.a == b && r.b == a)) ++fitted;
+    std::cout << fmt::format("skgen: {} tables, {} with a fitted repulsive, {} with the explicit zero repulsive\n",
+                             files.size(), fitted, files.size() - fitted);
     return 0;
   };
   return c;

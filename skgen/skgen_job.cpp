@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "objective/core/toml_table.hpp"
+#include "skgen/repulsive_fit.hpp"
 #include "skgen/skf_writer.hpp"
 
 namespace mesochain::skgen {
@@ -125,7 +126,7 @@ SkgenJob readSkgenJob(const std::string& path) {
   SkgenJob job;
   job.source = path;
   const TomlTable top(path, root, "");
-  top.allowOnly({"functional", "hubbard_functional", "output_dir", "pairs", "grid", "elements"});
+  top.allowOnly({"functional", "hubbard_functional", "output_dir", "pairs", "grid", "elements", "repulsive"});
   job.xc = parseXcKind(top.string("functional", "\"none\", \"lda\", \"lda-vwn\" or \"pbe\""), path);
   job.hubbardXc = top.has("hubbard_functional")
                       ? parseXcKind(top.string("hubbard_functional", "a functional name"), path)
@@ -203,11 +204,43 @@ SkgenJob readSkgenJob(const std::string& path) {
     for (const auto& a : job.elements)
       for (const auto& b : job.elements) job.pairs.emplace_back(a.symbol, b.symbol);
   }
+  if (top.has("repulsive")) {
+    const TomlTable rep = requireTable(top, "repulsive", "tables [repulsive.A-B]");
+    for (const std::string& name : rep.keys()) {
+      const TomlTable t = requireTable(rep, name, "a table [repulsive." + name + "]");
+      t.allowOnly({"curve_csv", "cutoff_bohr", "intervals"});
+      const auto dash = name.find('-');
+      RepulsiveRequest r;
+      r.key = t.name();
+      if (dash == std::string::npos || dash == 0 || dash + 1 == name.size())
+        rep.fail(name, "a table named '" + name + "'", "[repulsive.A-B], e.g. [repulsive.C-H]");
+      r.a = name.substr(0, dash);
+      r.b = name.substr(dash + 1);
+      for (const std::string& sym : {r.a, r.b})
+        if (!known(sym))
+          rep.fail(name, "the element " + sym + " without an [elements." + sym + "] table",
+                   "pairs of the elements defined in the file");
+      for (const auto& other : job.repulsive)
+        if ((other.a == r.a && other.b == r.b) || (other.a == r.b && other.b == r.a))
+          rep.fail(name, "a second repulsive for the pair", "one [repulsive.A-B] per pair (it serves B-A too)");
+      const std::filesystem::path curve(t.string("curve_csv", "a CSV file 'r_bohr,energy_hartree'"));
+      r.curve = curve.is_absolute() ? curve.string()
+                                    : (std::filesystem::path(path).parent_path() / curve).string();
+      r.cutoff = t.number("cutoff_bohr", "the repulsive cutoff in bohr");
+      if (!(r.cutoff > 0.0)) t.fail("cutoff_bohr", fmt::format("{}", r.cutoff), "a cutoff > 0");
+      if (t.has("intervals")) {
+        const long n = t.integer("intervals", "an integer 1..200");
+        if (n < 1 || n > 200) t.fail("intervals", fmt::format("{}", n), "an integer 1..200");
+        r.intervals = static_cast<int>(n);
+      }
+      job.repulsive.push_back(r);
+    }
+  }
   return job;
 }
 
 std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
-                               const ElementSettings& b) {
+                               const ElementSettings& b, const RepulsiveRequest* rep) {
   std::string doc = "<Documentation>\n  <General>\n";
   doc += fmt::format("    <Identifier>{}-{}.skf</Identifier>\n    <Code>mesochain skgen</Code>\n", a.symbol, b.symbol);
   doc += fmt::format("    <Input>{}</Input>\n  </General>\n  <SK_table>\n", job.source);
@@ -232,9 +265,17 @@ std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
     doc += "    </Basis>\n";
   }
   doc += "  </SK_table>\n  <E_rep>\n    <Storage>spline</Storage>\n";
-  doc += "    <Notes>Explicit zero repulsive: no repulsive potential was fitted; the spline block "
-         "evaluates to 0 at every distance. Fit one before using the table for total energies or "
-         "forces.</Notes>\n  </E_rep>\n</Documentation>\n";
+  if (rep) {
+    doc += fmt::format("    <Fit curve=\"{}\" cutoff_bohr=\"{}\" intervals=\"{}\"/>\n", rep->curve,
+                       rep->cutoff, rep->intervals);
+    doc += "    <Notes>Least-squares cubic spline to E_ref - E_el of the dimer (non-SCC), zero "
+           "with zero slope and curvature at the cutoff, exponential head.</Notes>\n";
+  } else {
+    doc += "    <Notes>Explicit zero repulsive: no repulsive potential was fitted; the spline block "
+           "evaluates to 0 at every distance. Fit one before using the table for total energies "
+           "or forces.</Notes>\n";
+  }
+  doc += "  </E_rep>\n</Documentation>\n";
   return doc;
 }
 
@@ -258,6 +299,7 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
   }
   std::filesystem::create_directories(job.outputDir);
   std::vector<std::string> written;
+  std::map<std::string, dftb::SplineRepulsiveData> fitted;
   for (const auto& [a, b] : job.pairs) {
     const std::string name = a + "-" + b;
     dftb::SkfTable t = buildSkTable(bases.at(a), bases.at(b), job.xc, job.grid, a == b,
@@ -265,9 +307,22 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
                                       done += 1.0;
                                       if (i % 10 == 0) report("pair " + name);
                                     });
-    t.spline = zeroRepulsive(1.0, 2.0);
+    const RepulsiveRequest* rep = nullptr;
+    for (const auto& r : job.repulsive)
+      if ((r.a == a && r.b == b) || (r.a == b && r.b == a)) rep = &r;
+    if (rep) {
+      const std::string unordered = rep->a + "-" + rep->b;
+      if (!fitted.count(unordered)) {
+        report("repulsive " + unordered);
+        fitted[unordered] = fitRepulsive(bases.at(rep->a), bases.at(rep->b), job.xc, job.grid.quadrature,
+                                         readDimerCurve(rep->curve), rep->cutoff, rep->intervals, rep->key);
+      }
+      t.spline = fitted.at(unordered);
+    } else {
+      t.spline = zeroRepulsive(1.0, 2.0);
+    }
     const std::string path = (std::filesystem::path(job.outputDir) / (name + ".skf")).string();
-    writeSkfFile(path, t, skgenDocumentation(job, *settings.at(a), *settings.at(b)));
+    writeSkfFile(path, t, skgenDocumentation(job, *settings.at(a), *settings.at(b), rep));
     written.push_back(path);
   }
   done = total;

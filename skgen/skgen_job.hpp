@@ -16,6 +16,10 @@
 //   [elements.C.shells] 2s = {...}  2p = {...}          # (overrides `wavefunction`)
 //   confinement tables: { r0_bohr, power } or { type = "woods-saxon", r0_bohr, height_hartree,
 //   slope_per_bohr }
+//   [repulsive.C-C]                    # optional per unordered pair (skgen/repulsive_fit.hpp)
+//   curve_csv = "c2.csv"               # r_bohr,energy_hartree; relative to the input file
+//   cutoff_bohr = 3.9
+//   intervals = 20
 #include <functional>
 #include <string>
 #include <utility>
@@ -26,6 +30,14 @@
 
 namespace mesochain::skgen {
 
+struct RepulsiveRequest {
+  std::string a, b;        // the pair (also used for B-A)
+  std::string curve;       // path of the dimer curve
+  double cutoff = 0.0;     // Bohr
+  int intervals = 20;
+  std::string key;         // "repulsive.A-B", for messages
+};
+
 struct SkgenJob {
   std::string source;
   XcKind xc = XcKind::Pbe;
@@ -34,6 +46,7 @@ struct SkgenJob {
   std::vector<std::pair<std::string, std::string>> pairs;
   TableGrid grid;
   std::string outputDir = "skf";
+  std::vector<RepulsiveRequest> repulsive;
 };
 
 // Strict reader: every unknown key, wrong type, unknown element, bad value or inconsistent
@@ -41,7 +54,8 @@ struct SkgenJob {
 SkgenJob readSkgenJob(const std::string& path);
 
 // Builds every element (free, density- and wavefunction-confined atoms) and every pair table;
-// writes outputDir/A-B.skf with the explicit zero repulsive (no repulsive fitted) and a
+// writes outputDir/A-B.skf with the fitted repulsive of the pair, or the explicit zero repulsive
+// when none is requested, and a
 // documentation block of the recipe. `progress(fraction, what)` along the way. Returns the paths
 // written. A confinement radius too small for a bound state is an InputError naming the shell.
 std::vector<std::string> runSkgen(const SkgenJob& job,
@@ -49,6 +63,6 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
 
 // The documentation block written after the spline (recipe of the two elements).
 std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
-                               const ElementSettings& b);
+                               const ElementSettings& b, const RepulsiveRequest* repulsive);
 
 }  // namespace mesochain::skgen
