@@ -12,13 +12,14 @@ namespace mesochain::app {
 Command makeBenchDftbCommand();
 Command makeBenchKpointsCommand();
 Command makeBenchDemCommand();
+Command makeBenchSkgenCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(
-      std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand()});
+      std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(), makeBenchSkgenCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
-    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem");
+    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, skgen");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };
