@@ -16,15 +16,17 @@ Command makeBenchEwaldCommand();
 Command makeBenchSccCommand();
 Command makeBenchNetworkCommand();
 Command makeBenchScanCommand();
+Command makeBenchSkgenCommand();
 
 Command makeBenchCommand() {
-  auto subs = std::make_shared<std::vector<Command>>(
-      std::vector<Command>{makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-                           makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(),
-                           makeBenchScanCommand()});
+  auto subs = std::make_shared<std::vector<Command>>(std::vector<Command>{
+      makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
+      makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(),
+      makeBenchScanCommand(), makeBenchSkgenCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
-    auto* bench = app.add_subcommand("bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, scan");
+    auto* bench = app.add_subcommand(
+        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, scan, skgen");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

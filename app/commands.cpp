@@ -9,10 +9,11 @@ Command makeBenchCommand();
 Command makeBuildCommand();
 Command makeBeamCommand();
 Command makeScanCommand();
+Command makeSkgenCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(), makeScanCommand(), makeBuildCommand(),
-          makeBeamCommand(),    makeDemCommand(), makeBenchCommand()};
+  return {makeVersionCommand(), makeRunCommand(),   makeScanCommand(), makeBuildCommand(),
+          makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand()};
 }
 
 }  // namespace mesochain::app

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -90,6 +91,18 @@ AtomSolution solveAtom(const AtomSettings& s) {
     vnuc[i] = -s.z / g.r[i];
   }
 
+  // Slater back-end: one basis per angular momentum, and the states of each l asked for
+  std::vector<std::unique_ptr<SlaterRadialSolver>> slater;
+  std::vector<int> statesPerL;
+  if (!s.slater.empty()) {
+    for (const auto& sh : s.shells) {
+      if (sh.l >= static_cast<int>(statesPerL.size())) statesPerL.resize(sh.l + 1, 0);
+      statesPerL[sh.l] = std::max(statesPerL[sh.l], sh.n - sh.l);
+    }
+    for (int l = 0; l < static_cast<int>(statesPerL.size()); ++l)
+      slater.push_back(std::make_unique<SlaterRadialSolver>(s.slater, g, l));
+  }
+
   std::vector<std::array<double, 2>> guesses(s.shells.size(),
                                              {std::numeric_limits<double>::quiet_NaN(),
                                               std::numeric_limits<double>::quiet_NaN()});
@@ -107,6 +120,15 @@ AtomSolution solveAtom(const AtomSettings& s) {
     st.nOut.assign(ns, std::vector<double>(np, 0.0));
     st.shells.clear();
     double bandSum = 0.0;
+    // Slater back-end: all states of every l and spin from one generalized eigenproblem
+    std::vector<std::array<std::vector<SlaterState>, 2>> slaterStates(slater.size());
+    for (std::size_t l = 0; l < slater.size(); ++l)
+      for (int sp = 0; sp < ns; ++sp) {
+        if (statesPerL[l] == 0) continue;
+        std::vector<double> vt(np);
+        for (int i = 0; i < np; ++i) vt[i] = st.v[sp][i] + vconf[i];
+        slaterStates[l][sp] = slater[l]->solve(vt, statesPerL[l]);
+      }
     for (std::size_t k = 0; k < s.shells.size(); ++k) {
       const AtomShell& sh = s.shells[k];
       ShellSolution sol;
@@ -117,10 +139,17 @@ AtomSolution solveAtom(const AtomSettings& s) {
         std::vector<double> vt(np);
         for (int i = 0; i < np; ++i) vt[i] = st.v[sp][i] + vconf[i];
         RadialState rs;
-        try {
-          rs = solveRadial(g, vt, s.z, sh.n, sh.l, guesses[k][sp]);
-        } catch (const NumericalError& e) {
-          throw NumericalError(s.name + ": " + e.what());
+        if (!slater.empty()) {
+          SlaterState& ss = slaterStates[sh.l][sp][sh.n - sh.l - 1];
+          rs.energy = ss.energy;
+          rs.u = ss.u;
+          sol.terms[sp] = ss.terms;
+        } else {
+          try {
+            rs = solveRadial(g, vt, s.z, sh.n, sh.l, guesses[k][sp]);
+          } catch (const NumericalError& e) {
+            throw NumericalError(s.name + ": " + e.what());
+          }
         }
         guesses[k][sp] = rs.energy;
         const double occ = ns == 2 ? sh.occupation[sp] : sh.occupation[0] + sh.occupation[1];
@@ -133,6 +162,7 @@ AtomSolution solveAtom(const AtomSettings& s) {
       if (ns == 1) {
         sol.energy[1] = sol.energy[0];
         sol.u[1] = sol.u[0];
+        sol.terms[1] = sol.terms[0];
       }
       st.shells.push_back(std::move(sol));
     }

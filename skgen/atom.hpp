@@ -14,6 +14,7 @@
 
 #include "skgen/confinement.hpp"
 #include "skgen/radial_grid.hpp"
+#include "skgen/slater_basis.hpp"
 #include "skgen/xc_functional.hpp"
 
 namespace mesochain::skgen {
@@ -31,6 +32,7 @@ struct AtomSettings {
   XcKind xc = XcKind::LdaPw92;
   bool polarised = false;
   Confinement confinement;  // applied to every shell during this SCF run
+  SlaterBasis slater;        // non-empty: Slater-type-function back-end, else the Numerov grid
   // grid
   double rMinTimesZ = 1e-6;  // r_min = rMinTimesZ / Z
   double rMax = 50.0;        // Bohr
@@ -47,6 +49,7 @@ struct ShellSolution {
   std::array<double, 2> occupation{};
   std::array<double, 2> energy{};            // per spin (unpolarised: both equal)
   std::array<std::vector<double>, 2> u{};    // u = r R, per spin
+  std::array<std::vector<SlaterTerm>, 2> terms{};  // Slater back-end: R as Slater terms, per spin
 };
 
 struct AtomEnergies {

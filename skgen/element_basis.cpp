@@ -16,6 +16,7 @@ AtomSettings atomSettings(const Element& e, const ElementSettings& s, XcKind xc,
     a.shells.push_back({sh.n, sh.l, {0.5 * sh.occupation, 0.5 * sh.occupation}});
   a.xc = xc;
   a.confinement = c;
+  a.slater = s.slater;
   a.h = s.h;
   a.rMax = s.rMax;
   return a;
@@ -56,12 +57,13 @@ ElementBasis buildElementBasis(const ElementSettings& s) {
   for (std::size_t k = 0; k < e.valence.size(); ++k) {
     const ShellOccupation& sh = e.shells[e.valence[k]];
     const AtomSolution wf = solveAtom(atomSettings(e, s, s.xc, s.shells[k]));
-    requireBound(wf, s.shells[k], sh.n, sh.l, s.source, fmt::format("{}.confinement (shell {}{})", s.symbol,
+    requireBound(wf, s.shells[k], sh.n, sh.l, s.source, fmt::format("elements.{}.wavefunction (shell {}{})", s.symbol,
                                                        sh.n, "spdf"[sh.l]));
     TwoCentreOrbital o;
     o.l = sh.l;
     const ShellSolution& ss = wf.shell(sh.n, sh.l);
     o.energy = ss.energy[0];
+    o.slater = ss.terms[0];
     o.grid = wf.grid;
     o.radial.resize(wf.grid.size());
     o.potential.resize(wf.grid.size());

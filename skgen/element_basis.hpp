@@ -18,6 +18,7 @@ struct ElementSettings {
   XcKind hubbardXc = XcKind::Pbe;  // functional of the U derivative (pbc-0-3 used LDA)
   Confinement density;
   std::vector<Confinement> shells;  // one per valence shell (order of Element::valence)
+  SlaterBasis slater;  // non-empty: every atom of the element solved in this Slater basis
   double h = 0.004;
   double rMax = 40.0;
   std::string source = "<skgen>";  // file for error messages

@@ -39,26 +39,37 @@ constexpr double kPi = std::numbers::pi;
 // derivatives, at local coordinates relative to the orbital's atom.
 struct OrbitalValue {
   double g = 0.0, gr = 0.0, gz = 0.0;
+  double t = 0.0;  // Slater back-end: (−½∇² φ) with the same angular factor as g
 };
 
 OrbitalValue evalOrbital(const TwoCentreOrbital& o, int m, double rho, double z) {
   const double r = std::sqrt(rho * rho + z * z);
-  double R, dR;
-  o.grid.interpolateWithDerivative(o.radial, r, R, dR);
+  double R, dR, tR = 0.0;
+  if (!o.slater.empty()) {
+    const SlaterValue sv = evaluateSlater(o.slater, o.l, r);
+    R = sv.R;
+    dR = sv.dR;
+    tR = sv.t;
+  } else {
+    o.grid.interpolateWithDerivative(o.radial, r, R, dR);
+  }
   OrbitalValue v;
   if (o.l == 0) {
     const double c = 1.0 / std::sqrt(4.0 * kPi);
     v.g = c * R;
+    v.t = c * tR;
     v.gr = c * dR * rho / r;
     v.gz = c * dR * z / r;
   } else if (o.l == 1) {
     const double c = std::sqrt(3.0 / (4.0 * kPi));
     const double P = R / r, dP = dR / r - R / (r * r);
     if (m == 0) {
+      v.t = c * tR * z / r;
       v.g = c * P * z;
       v.gr = c * dP * rho * z / r;
       v.gz = c * (dP * z * z / r + P);
     } else {
+      v.t = c * tR * rho / r;
       v.g = c * P * rho;
       v.gr = c * (dP * rho * rho / r + P);
       v.gz = c * dP * rho * z / r;
@@ -157,10 +168,13 @@ std::vector<SkIntegral> twoCentreIntegrals(const std::vector<TwoCentreOrbital>& 
       S += pw[k] * prod;
       if (withH) {
         const double rB = std::sqrt(prho[k] * prho[k] + zB * zB);
-        const double kin = ob.energy - ob.grid.interpolate(ob.potential, rB);
-        double v = kin + vloc[k];
+        double v = vloc[k];
         if (!vrho.empty()) v += vrho[k];
         double term = v * prod;
+        if (ob.slater.empty())
+          term += (ob.energy - ob.grid.interpolate(ob.potential, rB)) * prod;  // T φ_b = (ε − v) φ_b
+        else
+          term += va.g * vb.t;
         if (!vsig.empty()) {
           const double gr = va.gr * vb.g + va.g * vb.gr;
           const double gz = va.gz * vb.g + va.g * vb.gz;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "skgen/radial_grid.hpp"
+#include "skgen/slater_basis.hpp"
 #include "skgen/xc_functional.hpp"
 
 namespace mesochain::skgen {
@@ -27,6 +28,10 @@ struct TwoCentreOrbital {
   LogGrid grid;
   std::vector<double> radial;      // R(r) = u(r)/r
   std::vector<double> potential;   // v + v_conf the orbital was solved in (for T φ)
+  // Slater back-end: R as a sum of Slater terms; then R, ∇R and T φ are evaluated analytically
+  // (T φ = −½∇²φ, exact for a basis function that is not an exact eigenfunction of `potential`)
+  // and grid/radial/potential are not used by the integrals.
+  std::vector<SlaterTerm> slater;
 };
 
 // The density (and its neutral-atom potential) an atom contributes to the superposition.

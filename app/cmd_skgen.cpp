@@ -1,0 +1,63 @@
+// `mesochain skgen ELEMENTS.toml`: generates Slater-Koster tables (.skf) from confined atoms
+// (docs/skgen.md).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "skgen/skgen_job.hpp"
+
+namespace mesochain::app {
+
+namespace {
+struct SkgenOptions {
+  std::string input;
+  std::string outputDir;
+  bool quiet = false;
+};
+
+void drawSkgenProgress(double fraction, const std::string& what) {
+  constexpr int kWidth = 40;
+  const int filled = static_cast<int>(fraction * kWidth + 0.5);
+  std::string bar(filled, '#');
+  bar.resize(kWidth, ' ');
+  std::fprintf(stderr, "\r[%s] %5.1f%% %-16s", bar.c_str(), 100.0 * fraction, what.c_str());
+  std::fflush(stderr);
+}
+}  // namespace
+
+Command makeSkgenCommand() {
+  auto sub = std::make_shared<CLI::App*>(nullptr);
+  auto opt = std::make_shared<SkgenOptions>();
+  Command c;
+  c.attach = [sub, opt](CLI::App& app) {
+    *sub = app.add_subcommand("skgen", "generate Slater-Koster tables (.skf) from confined atoms");
+    (*sub)->add_option("elements", opt->input, "elements file (TOML, docs/skgen.md)")->required();
+    (*sub)->add_option("-o,--output-dir", opt->outputDir, "folder for the .skf files (default: output_dir of the file)");
+    (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
+  };
+  c.selected = [sub] { return *sub && (*sub)->parsed(); };
+  c.run = [opt] {
+    skgen::SkgenJob job = skgen::readSkgenJob(opt->input);
+    if (!opt->outputDir.empty()) job.outputDir = opt->outputDir;
+    std::function<void(double, const std::string&)> progress;
+    if (!opt->quiet) progress = drawSkgenProgress;
+    const std::vector<std::string> files = skgen::runSkgen(job, progress);
+    if (!opt->quiet) std::fprintf(stderr, "\n");
+    for (const std::string& f : files) std::cout << "wrote " << f << "\n";
+    int fitted = 0;
+    for (const auto& [a, b] : job.pairs)
+      for (const auto& r : job.repulsive)
+        if ((r.a == a && r.b == b) || (r.a == b && r.b == a)) ++fitted;
+    std::cout << fmt::format("skgen: {} tables, {} with a fitted repulsive, {} with the explicit zero repulsive\n",
+                             files.size(), fitted, files.size() - fitted);
+    return 0;
+  };
+  return c;
+}
+
+}  // namespace mesochain::app

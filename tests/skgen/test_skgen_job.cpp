@@ -1,0 +1,124 @@
+// The `mesochain skgen` input file: strict reading with clear errors, and a small run whose
+// tables dftb/skf_file reads back.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "dftb/skf_file.hpp"
+#include "skgen/skgen_job.hpp"
+
+using namespace mesochain;
+using namespace mesochain::skgen;
+
+namespace {
+const char* kHydrogen = R"(functional = "pbe"
+pairs = ["H-H"]
+[grid]
+spacing_bohr = 0.5
+cutoff_bohr = 6.0
+quadrature_points = 32
+[elements.H]
+exponents_per_bohr = [0.5, 1.0, 2.0]
+powers = 3
+density = { r0_bohr = 2.5, power = 2 }
+wavefunction = { r0_bohr = 3.0, power = 2 }
+)";
+
+std::string writeInput(const std::string& name, const std::string& text) {
+  const auto p = std::filesystem::temp_directory_path() / ("mesochain-skgen-" + name + ".toml");
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto i = s.find(from);
+  EXPECT_NE(i, std::string::npos) << from;
+  return s.replace(i, from.size(), to);
+}
+
+// The InputError message of reading (and, with run = true, running) the file.
+std::string errorOf(const std::string& name, const std::string& text, bool run = false) {
+  const std::string path = writeInput(name, text);
+  try {
+    SkgenJob job = readSkgenJob(path);
+    if (run) {
+      job.outputDir = (std::filesystem::temp_directory_path() / "mesochain-skgen-err").string();
+      runSkgen(job);
+    }
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError for " << name;
+  return "";
+}
+}  // namespace
+
+TEST(SkgenJob, ReadsTheRecipe) {
+  const SkgenJob job = readSkgenJob(writeInput("ok", kHydrogen));
+  ASSERT_EQ(job.elements.size(), 1u);
+  EXPECT_EQ(job.elements[0].symbol, "H");
+  EXPECT_EQ(job.elements[0].slater.exponents.size(), 3u);
+  EXPECT_EQ(job.elements[0].shells.size(), 1u);
+  EXPECT_DOUBLE_EQ(job.elements[0].shells[0].r0, 3.0);
+  EXPECT_DOUBLE_EQ(job.elements[0].density.r0, 2.5);
+  EXPECT_EQ(job.pairs.size(), 1u);
+  EXPECT_EQ(job.grid.quadrature.nXi, 32);
+  EXPECT_EQ(job.hubbardXc, XcKind::Pbe);
+}
+
+TEST(SkgenJob, RunWritesTablesTheReaderAccepts) {
+  SkgenJob job = readSkgenJob(writeInput("run", kHydrogen));
+  job.outputDir = (std::filesystem::temp_directory_path() / "mesochain-skgen-run").string();
+  double last = -1.0;
+  bool monotone = true;
+  const auto files = runSkgen(job, [&](double f, const std::string&) {
+    monotone = monotone && f >= last;
+    last = f;
+  });
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_TRUE(monotone);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+  const dftb::SkfTable t = dftb::readSkfFile(files[0], true);
+  EXPECT_EQ(t.rows(), 12);
+  EXPECT_NEAR(t.onsite[0], -0.2386004, 1e-6);  // PBE hydrogen 1s (pbc-0-3 H-H.skf: -0.23860040)
+  EXPECT_GT(t.over(3, dftb::kSkfSsSigma), 0.0);
+  ASSERT_TRUE(t.spline.has_value());
+}
+
+TEST(SkgenJob, UnknownElementIsAClearError) {
+  const std::string e = errorOf("unknown", replaced(kHydrogen, "[elements.H]", "[elements.Xx]"));
+  EXPECT_NE(e.find("unknown element 'Xx'"), std::string::npos) << e;
+  EXPECT_NE(e.find("elements.Xx"), std::string::npos) << e;
+}
+
+TEST(SkgenJob, CutoffShorterThanTheFirstGridPointIsAClearError) {
+  const std::string e = errorOf("cutoff", replaced(kHydrogen, "cutoff_bohr = 6.0", "cutoff_bohr = 0.3"));
+  EXPECT_NE(e.find("grid.cutoff_bohr"), std::string::npos) << e;
+  EXPECT_NE(e.find("shorter than the first grid point"), std::string::npos) << e;
+}
+
+TEST(SkgenJob, ConfinementTooSmallForABoundStateIsAClearError) {
+  const std::string e = errorOf(
+      "bound", replaced(kHydrogen, "wavefunction = { r0_bohr = 3.0", "wavefunction = { r0_bohr = 0.3"), true);
+  EXPECT_NE(e.find("confinement radius large enough for a bound state"), std::string::npos) << e;
+  EXPECT_NE(e.find("1s"), std::string::npos) << e;
+}
+
+TEST(SkgenJob, UnknownKeysWrongTypesAndBadPairsAreClearErrors) {
+  EXPECT_NE(errorOf("key", replaced(kHydrogen, "powers = 3", "power = 3")).find("unknown key 'power'"),
+            std::string::npos);
+  EXPECT_NE(errorOf("type", replaced(kHydrogen, "spacing_bohr = 0.5", "spacing_bohr = \"0.5\"")).find("grid.spacing_bohr"),
+            std::string::npos);
+  EXPECT_NE(errorOf("pair", replaced(kHydrogen, "[\"H-H\"]", "[\"H-C\"]")).find("no [elements.C] table"),
+            std::string::npos);
+  EXPECT_NE(errorOf("xc", replaced(kHydrogen, "\"pbe\"", "\"b3lyp\"")).find("b3lyp"), std::string::npos);
+  EXPECT_NE(errorOf("shell", replaced(kHydrogen, "wavefunction = { r0_bohr = 3.0, power = 2 }",
+                                     "shells = { 2s = { r0_bohr = 3.0, power = 2 } }"))
+                .find("2s"),
+            std::string::npos);
+  EXPECT_NE(errorOf("dup", replaced(kHydrogen, "[0.5, 1.0, 2.0]", "[0.5, 1.0, 1.0]")).find("twice"),
+            std::string::npos);
+}
