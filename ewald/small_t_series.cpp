@@ -31,6 +31,7 @@ SmallTSeries::SmallTSeries(Kernel kernel, double tc, double rhoI, double rhoJ)
   double e = 1;
   for (int m = 0; m < terms_; ++m) {
     expSeries_[m] = e;
+    expAbsSum_ += std::abs(e);
     e *= -a * tc / (m + 1);
   }
 }
@@ -54,20 +55,22 @@ const std::array<double, SmallTSeries::kMaxTerms>& SmallTSeries::coefficients(in
   return p;
 }
 
-double SmallTSeries::magnitude(int l) {
-  const auto& p = coefficients(l);
-  double m = 0;
-  for (int n = 0; n < terms_; ++n) m += std::abs(p[n]);
-  return prefactor_ * m;
+double SmallTSeries::coefficientBound(int l) const {
+  // sum_n |P_n^(l)| <= e^{a t_c} sum_j h^(2j+l) / (j! (j+l)!) <= e^{a t_c} h^l / l! e^{h^2 / (l+1)}
+  // (the product of the two series, eq. (E18), with |e^{-ta}| terms summed in absolute value).
+  l = std::abs(l);
+  if (l >= terms_) return 0.0;
+  const double h = rhoI_ * rhoJ_ * tc_;
+  double c = 1;
+  for (int i = 1; i <= l; ++i) c *= h / i;
+  return expAbsSum_ * c * std::exp(h * h / (l + 1));
 }
 
-double SmallTSeries::derivativeMagnitude(int l) {
-  const auto& pl = coefficients(l);
-  const auto& pm = coefficients(l - 1);
-  const auto& pp = coefficients(l + 1);
-  double m = 0;
-  for (int n = 0; n < terms_; ++n) m += 2 * std::abs(pl[n]) + std::abs(pm[n]) + std::abs(pp[n]);
-  return prefactor_ * tc_ * std::max(rhoI_, rhoJ_) * m;
+double SmallTSeries::magnitude(int l) const { return prefactor_ * coefficientBound(l); }
+
+double SmallTSeries::derivativeMagnitude(int l) const {
+  return prefactor_ * tc_ * std::max(rhoI_, rhoJ_) *
+         (2 * coefficientBound(l) + coefficientBound(l - 1) + coefficientBound(l + 1));
 }
 
 SmallTIntegrals SmallTSeries::integrals(int l, double q, bool regularised, bool withDerivatives) {

@@ -28,12 +28,12 @@ class SmallTSeries {
   // derivatives from order maxPower() + 1 on).
   int maxPower() const { return terms_ - 1; }
   // An upper bound of |F_lk| over all q on [0, t_c] without the q-dependence: c t_c^beta
-  // sum_n |P_n^(l)| (the q-dependent factor E_{n+beta+1}(x) <= 1 / max(l + beta, 1) e^{-x} for
-  // x >= 1 is applied by the caller).
-  double magnitude(int l);
+  // times a closed-form bound of sum_n |P_n^(l)| (the q-dependent factor E_{n+beta+1}(x) <=
+  // e^{-x} / max(l + beta, 1) for x >= 1 is applied by the caller).
+  double magnitude(int l) const;
   // The same bound for the derivative integrands of order l (eq. (E17)), times a length
   // max(rho_i, rho_j) t_c: on the axis B_1 vanishes but its radial derivative does not.
-  double derivativeMagnitude(int l);
+  double derivativeMagnitude(int l) const;
   // F_lk on [0, t_c] for order l and wave number q. regularised: the Coulomb l = 0, q = 0 term,
   // with B_0 - 1 in place of B_0 (eq. (E14)).
   SmallTIntegrals integrals(int l, double q, bool regularised, bool withDerivatives);
@@ -42,11 +42,13 @@ class SmallTSeries {
   // Scaled Taylor coefficients P_n^(l) = p_n^(l) t_c^n of B_l(t) = sum_n p_n^(l) t^n (orders
   // l >= 0; I_{-l} = I_l), computed on first use.
   const std::array<double, kMaxTerms>& coefficients(int l);
+  double coefficientBound(int l) const;  // >= sum_n |P_n^(l)|
 
   Kernel kernel_;
   double tc_, rhoI_, rhoJ_, beta_, prefactor_;
   int terms_ = 1;
   std::array<double, kMaxTerms> expSeries_{};  // (-a t_c)^m / m!
+  double expAbsSum_ = 0;                        // sum_m |(-a t_c)^m / m!|
   std::array<std::array<double, kMaxTerms>, kMaxTerms + 2> p_{};  // orders 0..kMaxTerms+1
   std::array<bool, kMaxTerms + 2> have_{};
   std::array<double, kMaxTerms> zeros_{};
