@@ -6,11 +6,16 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "common/plot/canvas.hpp"
+#include "common/plot/figure.hpp"
+#include "common/plot/png_io.hpp"
 #include "common/units.hpp"
 #include "dftb/dispersion_ewald.hpp"
 #include "ewald/helical_lattice_sum.hpp"
@@ -23,7 +28,41 @@ namespace {
 struct BenchOptions {
   double seconds = 0.3;  // minimum time per measurement
   bool splittingScan = false;
+  std::string png = "bench-ewald.png";
 };
+
+// One curve of the error-against-time plot.
+struct Curve {
+  std::string name;
+  std::vector<double> seconds, error;
+  bool dashed = false;
+  int color = -1;  // palette index; -1: the next one
+};
+
+// Panel of |relative error| against seconds per call (log-log). Exact zeros cannot sit on a log
+// axis: they are left out and the legend says how many.
+plot::Image panel(const std::string& title, const std::string& xLabel, const std::vector<Curve>& curves,
+                  int width = 900) {
+  plot::Figure f(title);
+  f.x.label = xLabel;
+  f.y.label = "relative error";
+  f.x.scale = f.y.scale = plot::Scale::Log10;
+  const plot::Marker markers[] = {plot::Marker::Circle, plot::Marker::Square, plot::Marker::Triangle,
+                                  plot::Marker::Diamond};
+  int i = 0;
+  for (const Curve& c : curves) {
+    std::vector<double> x, y;
+    for (size_t k = 0; k < c.error.size(); ++k)
+      if (c.error[k] > 0) x.push_back(c.seconds[k]), y.push_back(c.error[k]);
+    const size_t zeros = c.error.size() - y.size();
+    plot::SeriesStyle style;
+    style.marker = markers[i++ % 4];
+    style.dashed = c.dashed;
+    if (c.color >= 0) style.color = plot::paletteColor(c.color);
+    f.add(zeros ? fmt::format("{} ({} exact zeros not shown)", c.name, zeros) : c.name, x, y, style);
+  }
+  return f.render(width, 600, title);
+}
 
 // Seconds per call of f, repeated until `seconds` have passed.
 double timePerCall(const std::function<void()>& f, double seconds) {
@@ -58,7 +97,8 @@ Eigen::VectorXd charges(int n) {
   return q;
 }
 
-void latticeSums(const BenchOptions& opt) {
+void latticeSums(const BenchOptions& opt, std::vector<Curve>& coulombCurves,
+                 std::vector<Curve>& sixthCurves) {
   const std::vector<double> tolerances{1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
   for (ewald::Kernel k : {ewald::Kernel::Coulomb, ewald::Kernel::InverseSixth}) {
     const bool coulomb = k == ewald::Kernel::Coulomb;
@@ -68,6 +108,8 @@ void latticeSums(const BenchOptions& opt) {
                  "(l,k) terms  rel. error  time/ms\n";
     for (const auto& bc : cells()) {
       const auto& cell = bc.cell;
+      Curve& curve = (coulomb ? coulombCurves : sixthCurves).emplace_back();
+      curve.name = fmt::format("{} (N_o = {})", bc.name, cell.atomCount());
       const Eigen::VectorXd q = charges(cell.atomCount());
       ewald::LatticeSumSettings ref;
       ref.tolerance = 1e-13;
@@ -83,6 +125,8 @@ void latticeSums(const BenchOptions& opt) {
             coulomb ? std::abs(0.5 * q.dot(phi * q) - eRef) / std::abs(eRef)
                     : (phi - phiRef).cwiseAbs().maxCoeff() / phiRef.cwiseAbs().maxCoeff();
         const auto plan = sum.plan(cell);
+        curve.seconds.push_back(t);
+        curve.error.push_back(err);
         std::cout << fmt::format("{:20s} {:4d} {:3d}  {:9.0e}  {:13.3f}  {:8.2f}  {:5d}  {:11d}  "
                                  "{:10.2e}  {:7.3f}\n",
                                  bc.name, cell.atomCount(), cell.symmetry.rotationOrder(), tol,
@@ -123,14 +167,20 @@ double energyOf(const dftb::EnergyTerm& t, const objective::ObjectiveCell& c) {
   return out.energy;
 }
 
-void dispersion(const BenchOptions& opt) {
+void dispersion(const BenchOptions& opt, std::vector<Curve>& curves) {
   std::cout << "\nLennard-Jones dispersion (carbon UFF-type, eps = 0.069 kcal/mol, r0 = 3.8 A): "
                "energy per cell\n";
   std::cout << "cell                  summation  setting         rel. error  time/ms\n";
+  int cellIndex = 0;
   for (const auto& bc : cells()) {
     const auto& cell = bc.cell;
     const auto base = dftb::UffLennardJones::carbonDefaults(60.0 * units::kAngstromInBohr);
     const double eRef = energyOf(dftb::EwaldDispersionTerm(base, 1e-13), cell);
+    Curve cut, ew;
+    cut.name = bc.name + ", cutoff 10-120 A";
+    cut.dashed = true;
+    ew.name = bc.name + ", Ewald 1e-4..1e-10";
+    cut.color = ew.color = cellIndex++;
     for (double rcA : {10.0, 20.0, 30.0, 60.0, 120.0}) {
       const double rc = rcA * units::kAngstromInBohr;
       auto lj = std::make_shared<dftb::UffLennardJones>(base.epsilon(), base.r0(), rc);
@@ -138,6 +188,8 @@ void dispersion(const BenchOptions& opt) {
           "lj", [p = lj.get()](int, int) -> const dftb::RadialPotential& { return *p; }, rc);
       double e = 0;
       const double t = timePerCall([&] { e = energyOf(term, cell); }, opt.seconds);
+      cut.seconds.push_back(t);
+      cut.error.push_back(std::abs(e - eRef) / std::abs(eRef));
       std::cout << fmt::format("{:20s}  cutoff     r_c = {:5.0f} A   {:10.2e}  {:7.3f}\n", bc.name,
                                rcA, std::abs(e - eRef) / std::abs(eRef), 1e3 * t)
                 << std::flush;
@@ -148,10 +200,14 @@ void dispersion(const BenchOptions& opt) {
           dftb::UffLennardJones(base.epsilon(), base.r0(), 30.0 * units::kAngstromInBohr), tol);
       double e = 0;
       const double t = timePerCall([&] { e = energyOf(term, cell); }, opt.seconds);
+      ew.seconds.push_back(t);
+      ew.error.push_back(std::abs(e - eRef) / std::abs(eRef));
       std::cout << fmt::format("{:20s}  ewald      tol = {:7.0e}   {:10.2e}  {:7.3f}\n", bc.name, tol,
                                std::abs(e - eRef) / std::abs(eRef), 1e3 * t)
                 << std::flush;
     }
+    curves.push_back(cut);
+    curves.push_back(ew);
   }
 }
 
@@ -167,6 +223,8 @@ Command makeBenchEwaldCommand() {
     (*sub)->add_option("--seconds", opt->seconds, "minimum time per measurement");
     (*sub)->add_flag("--splitting-scan", opt->splittingScan,
                      "only: time and error of 1/r against the splitting parameter");
+    (*sub)->add_option("--png", opt->png,
+                       "plot error against time (1/r, 1/r^6, dispersion cutoff vs Ewald) here");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
@@ -174,8 +232,18 @@ Command makeBenchEwaldCommand() {
       splittingScan(*opt);
       return 0;
     }
-    latticeSums(*opt);
-    dispersion(*opt);
+    std::vector<Curve> coulomb, sixth, lj;
+    latticeSums(*opt, coulomb, sixth);
+    dispersion(*opt, lj);
+    const plot::Image top =
+        plot::besideEachOther(panel("1/r: energy error against time (tolerance 1e-4..1e-12)",
+                                    "seconds per matrix()", coulomb),
+                              panel("1/r^6: max element error against time (1e-4..1e-12)",
+                                    "seconds per matrix()", sixth));
+    const plot::Image bottom = panel("Lennard-Jones dispersion: cutoff sum (dashed) vs Ewald",
+                                     "seconds per energy", lj, 1800);
+    plot::writePng(opt->png, plot::aboveEachOther(top, bottom));
+    std::cout << "\nwrote " << opt->png << "\n";
     return 0;
   };
   return c;

@@ -1,9 +1,11 @@
 #include "ewald/helical_lattice_sum.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
@@ -68,10 +70,81 @@ double shortestDistance(const ObjectiveCell& cell) {
   return std::numeric_limits<double>::infinity();
 }
 
+// Modelled cost of one pair (in instructions, calibrated with callgrind on carbon tubes) at
+// splitting parameter alpha, docs/ewald.md section "Splitting parameter": real-space images
+// (~110 each, ~80 per screw power), the closed-form small-t series (~8000 per pair, ~1500 per
+// (l, k) term) and, when alpha^2 > t_c, the quadrature nodes above t_c (a Bessel sequence of
+// ~l_A + 50 orders at ~15 each, ~60 per (l, k) term).
+double modelledPairCost(double alpha, double tol, double T, int na, double rho) {
+  const double L = std::log(1 / tol) + 3;
+  const double rc = std::sqrt(L) / alpha;
+  const double zetas = 2 * rc / T + 1;
+  double perZeta = na;
+  if (na > 8) perZeta = std::min<double>(na, na * std::min(1.0, rc / (kPi * rho)) + 3);
+  const double real = zetas * (80 + 110 * perZeta);
+  const double spread = 4 * rho * rho;
+  const double tc = std::min(alpha * alpha, 1 / spread);
+  int lB = 0;  // B_l ~ (t_c b / 2)^l / l!: orders above tol
+  for (double m = 1; lB < 24 && m > tol; m *= tc * spread / 4 / ++lB) {
+  }
+  const double series = 8000 + 1500 * (lB / na + 1) * (2 * std::sqrt(tc * L) * T / kPi + 1);
+  double quad = 0;
+  if (alpha * alpha > tc) {
+    const double panels = std::ceil(std::log(alpha * alpha / tc));
+    const double lA = 2 * alpha * rho * std::sqrt(L);
+    quad = 12 * panels * (15 * (lA + 50) + 60 * (lA / na + 1) * (2 * alpha * std::sqrt(L) * T / kPi + 1));
+  }
+  return real + series + quad;
+}
+
 struct Resolved {
   LatticeSumPlan plan;
   detail::ReciprocalSetup setup;
+  std::vector<std::array<double, 2>> rotations;  // cos, sin of 2 pi c / N_a
 };
+
+// Real-space images g x_j within r_c of x_i, eq. (E4) (the same set as
+// objective::forEachImageNear): one sincos per screw power zeta, composed with the table of the
+// C_Na rotations; for N_a > 8 only the rotations whose in-plane angle can bring the image within
+// r_c (|phi_i - phi_j - zeta gamma - 2 pi c / N_a| <= theta, cos theta = (rho_i^2 + rho_j^2 -
+// r_c^2 + dz^2) / (2 rho_i rho_j)), padded by one on each side; every image is still tested.
+template <class F>
+void forEachRealSpaceImage(const Symmetry& sym, const std::vector<std::array<double, 2>>& rot,
+                           const Eigen::Vector3d& xi, const Eigen::Vector3d& xj, double rc, F&& f) {
+  const double T = sym.translation(), gamma = sym.twist();
+  const int na = sym.rotationOrder();
+  const double rc2 = rc * rc;
+  const long zmin = static_cast<long>(std::ceil((xi.z() - xj.z() - rc) / T));
+  const long zmax = static_cast<long>(std::floor((xi.z() - xj.z() + rc) / T));
+  const double ri = std::hypot(xi.x(), xi.y()), rj = std::hypot(xj.x(), xj.y());
+  const double phiI = std::atan2(xi.y(), xi.x()), phiJ = std::atan2(xj.y(), xj.x());
+  for (long zeta = zmin; zeta <= zmax; ++zeta) {
+    const double z = xj.z() + static_cast<double>(zeta) * T;
+    const double dz = z - xi.z();
+    const double inPlane2 = rc2 - dz * dz;
+    if (inPlane2 <= (ri - rj) * (ri - rj)) continue;
+    const double a0 = static_cast<double>(zeta) * gamma;
+    const double cz = std::cos(a0), sz = std::sin(a0);
+    const double bx = cz * xj.x() - sz * xj.y(), by = sz * xj.x() + cz * xj.y();
+    long cLo = 0, cHi = na - 1;
+    if (na > 8 && ri * rj > 0) {
+      const double cosTheta = (ri * ri + rj * rj - inPlane2) / (2 * ri * rj);
+      if (cosTheta > -1) {
+        const double theta = std::acos(std::min(cosTheta, 1.0));
+        const double perStep = na / (2 * kPi);
+        const double center = std::remainder(phiI - phiJ - a0, 2 * kPi) * perStep;
+        const long lo = static_cast<long>(std::floor(center - theta * perStep)) - 1;
+        const long hi = static_cast<long>(std::ceil(center + theta * perStep)) + 1;
+        if (hi - lo + 1 < na) cLo = lo, cHi = hi;
+      }
+    }
+    for (long cc = cLo; cc <= cHi; ++cc) {
+      const int c = static_cast<int>(((cc % na) + na) % na);
+      const Eigen::Vector3d y(rot[c][0] * bx - rot[c][1] * by, rot[c][1] * bx + rot[c][0] * by, z);
+      if ((y - xi).squaredNorm() < rc2) f(GroupElement{zeta, c}, y);
+    }
+  }
+}
 
 // Splitting parameter from a cost model (real-space images vs. reciprocal terms) unless given,
 // then every truncation from the tolerance (docs/ewald.md section "Truncations").
@@ -85,6 +158,10 @@ Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCel
     throw InputError(kSource, "ewald splitting", std::to_string(*st.splitting),
                      "a positive splitting parameter (1/Bohr)");
   Resolved r;
+  for (int c = 0; c < cell.symmetry.rotationOrder(); ++c) {
+    const double a = 2 * kPi * c / cell.symmetry.rotationOrder();
+    r.rotations.push_back({std::cos(a), std::sin(a)});
+  }
   LatticeSumPlan& p = r.plan;
   p.shortestDistance = shortestDistance(cell);
   const double dmin = std::isfinite(p.shortestDistance) ? p.shortestDistance : 1.0;
@@ -97,19 +174,13 @@ Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCel
   double rhoMax = 1.0;
   for (int i = 0; i < cell.atomCount(); ++i)
     rhoMax = std::max(rhoMax, std::hypot(cell.positions(0, i), cell.positions(1, i)));
-  const double L = std::log(1 / tol) + 3;
   if (st.splitting) {
     p.splitting = *st.splitting;
   } else {
-    // cost(alpha) ~ N_a (2 r_c / T + 1) + c_r (l_max / N_a + 1)(q_max T / pi + 1),
-    // r_c = sqrt(L) / alpha, l_max = 2 alpha rho_max sqrt(L), q_max = 2 alpha sqrt(L).
     double best = std::numeric_limits<double>::infinity();
-    for (double a = 0.02; a < 5.0; a *= 1.05) {
-      const double rc = std::sqrt(L) / a;
-      const double real = na * (2 * rc / T + 1) * 2.0;
-      const double recip = 30.0 * (2 * a * rhoMax * std::sqrt(L) / na + 1) *
-                           (2 * a * std::sqrt(L) * T / kPi + 1);
-      if (real + recip < best) best = real + recip, p.splitting = a;
+    for (double a = 1e-3; a < 5.0; a *= 1.04) {
+      const double c = modelledPairCost(a, tol, T, na, rhoMax);
+      if (c < best) best = c, p.splitting = a;
     }
   }
   const double alpha = p.splitting;
@@ -168,8 +239,8 @@ PairResult pairSum(Kernel kernel, const Resolved& r, const ObjectiveCell& cell, 
   }
   const double alpha = r.plan.splitting;
   // Real-space part, eq. (E4).
-  objective::forEachImageNear(
-      sym, xi, xj, r.plan.realSpaceCutoff, [&](const GroupElement& g, const Eigen::Vector3d& y) {
+  forEachRealSpaceImage(
+      sym, r.rotations, xi, xj, r.plan.realSpaceCutoff, [&](const GroupElement& g, const Eigen::Vector3d& y) {
         if (i == j && g.isIdentity()) return;
         const Eigen::Vector3d d = y - xi;
         const double dist = d.norm();

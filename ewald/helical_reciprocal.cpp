@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "ewald/scaled_bessel.hpp"
+#include "ewald/small_t_series.hpp"
 
 namespace mesochain::ewald::detail {
 
@@ -64,26 +65,17 @@ PairLongRange longRangePair(const ReciprocalSetup& s, double rhoI, double rhoJ, 
   const int na = s.rotationOrder;
   const double T = s.translation, gamma = s.twist, alpha2 = s.alpha * s.alpha;
   const double pref = na / T;  // eq. (E8)
-  const double rr = rhoI * rhoI + rhoJ * rhoJ;
   const double drho2 = (rhoI - rhoJ) * (rhoI - rhoJ);
   const double eps = s.elementTolerance;
 
-  // Lower end of the u-integral, eq. (E13): below u_min every integrand is bounded by
-  // bound(t) (its integral over (-inf, u_min] is at most bound(t_min)), kept below eps / 100.
-  const double c1 = (2 * kPi / T) * (2 * kPi / T) / 4;  // smallest nonzero q^2 / 4 at l = 0
-  auto bound = [&](double t) {
-    const double e = std::exp(-c1 / t);
-    const double kTerms = 2 * e / (1 - e + 1e-300);
-    const double first = coulomb ? t * rr : 1.0;  // l = 0, k = 0 (regularised for Coulomb)
-    return pref * omega(s.kernel, t) * (std::max(first, t * rr) + kTerms);
-  };
-  double uMin = 0;
-  while (bound(alpha2 * std::exp(uMin)) > 0.01 * eps) {
-    uMin -= s.panelWidth;
-    if (uMin < -400) throw NumericalError("helical Ewald: splitting integral does not converge");
-  }
-  const int panels = std::max(1, static_cast<int>(std::ceil(-uMin / s.panelWidth - 1e-9)));
-  const double h = -uMin / panels;
+  // Split of the u-integral at t_c = min(alpha^2, 1 / (rho_i + rho_j)^2), eq. (E18): below t_c
+  // the Taylor series of B_l in t integrates in closed form (small_t_series.hpp); above it, up to
+  // alpha^2, composite Gauss-Legendre in u = ln(t / alpha^2).
+  const double spread = (rhoI + rhoJ) * (rhoI + rhoJ);
+  const double tc = spread * alpha2 > 1 ? 1 / spread : alpha2;
+  const double uMin = std::log(tc / alpha2);
+  const int panels = uMin < 0 ? std::max(1, static_cast<int>(std::ceil(-uMin / s.panelWidth - 1e-9))) : 0;
+  const double h = panels > 0 ? -uMin / panels : 0.0;
 
   static thread_local std::vector<double> glx, glw;
   if (glx.empty()) gaussLegendre(kQuadratureOrder, glx, glw);
@@ -92,7 +84,36 @@ PairLongRange longRangePair(const ReciprocalSetup& s, double rhoI, double rhoJ, 
   const double uRange = std::max(-uMin, 1.0);
   auto threshold = [&](double t) { return 0.02 * eps / (2 * pref * omega(s.kernel, t) * uRange); };
   const double deltaMin = threshold(alpha2);
-  const double qMaxAll = 2 * s.alpha * std::sqrt(std::max(std::log(1 / deltaMin), 1.0));
+  double qMaxAll = 2 * s.alpha * std::sqrt(std::max(std::log(1 / deltaMin), 1.0));
+
+  // Orders and axial ranges of the small-t part, eq. (E20): order l is bounded by
+  // A_l = c t_c^beta sum_n |P_n^(l)| / max(l + beta, 1) times sum_k e^{-x_k}, x = q^2 / (4 t_c),
+  // which is at most 1 + sqrt(4 pi t_c) / dq; wave numbers with x > X_l leave out at most
+  // 2 A_l e^{-X_l} (1 + sqrt(t_c / X_l) / dq).
+  SmallTSeries series(s.kernel, tc, rhoI, rhoJ);
+  const double beta = coulomb ? 0.0 : 2.5;
+  const double dq = 2 * kPi / T;
+  const double deltaB = 0.02 * eps / (2 * pref * (series.maxPower() + 2));
+  const double kSum = 1 + std::sqrt(4 * kPi * tc) / dq;
+  struct SeriesOrder {
+    int m;
+    double xMax;
+  };
+  static thread_local std::vector<SeriesOrder> seriesOrders;
+  seriesOrders.clear();
+  for (int m = 0; m * na <= series.maxPower() + (withDerivatives ? 1 : 0); ++m) {
+    const int l = m * na;
+    // With derivatives, measured like the quadrature part in units of 1/alpha.
+    const double A = std::max(series.magnitude(l),
+                              withDerivatives ? series.derivativeMagnitude(l) / s.alpha : 0.0) /
+                     std::max(l + beta, 1.0);
+    if (m > 0 && A * kSum < deltaB) break;
+    double X = 1;
+    for (int it = 0; it < 3; ++it)
+      X = std::max(1.0, std::log(std::max(2 * A * (1 + std::sqrt(tc / X) / dq) / deltaB, 1.0)));
+    seriesOrders.push_back({m, X});
+    qMaxAll = std::max(qMaxAll, 2 * std::sqrt(tc * X));
+  }
 
   static thread_local std::vector<OrderBlock> blocks;
   static thread_local std::vector<double> ie;
@@ -182,15 +203,36 @@ PairLongRange longRangePair(const ReciprocalSetup& s, double rhoI, double rhoJ, 
     }
   }
 
+  // Small-t part in closed form, eqs. (E19)-(E20).
+  for (const SeriesOrder& so : seriesOrders) {
+    const int l = so.m * na;
+    const double lgam = l * gamma;
+    const double qc = 2 * std::sqrt(tc * so.xMax);
+    long kLo = static_cast<long>(std::ceil((-T * qc - lgam) / (2 * kPi)));
+    long kHi = static_cast<long>(std::floor((T * qc - lgam) / (2 * kPi)));
+    if (coulomb && l == 0) kLo = std::min(kLo, 0L), kHi = std::max(kHi, 0L);
+    OrderBlock& blk = block(so.m);
+    kLo = std::max(kLo, blk.kLow);
+    kHi = std::min(kHi, blk.kLow + static_cast<long>(blk.acc.size()) - 1);
+    if (kHi - kLo > kMaxTermsPerNode)
+      throw NumericalError("helical Ewald: too many axial wave numbers per order");
+    out.maxOrder = std::max(out.maxOrder, l);
+    for (long k = kLo; k <= kHi; ++k) {
+      const double q = (lgam + 2 * kPi * k) / T;
+      const SmallTIntegrals in = series.integrals(l, q, coulomb && l == 0 && k == 0, withDerivatives);
+      Accumulator& a = blk.acc[static_cast<size_t>(k - blk.kLow)];
+      a.f += in.f;
+      a.fRhoI += in.fRhoI;
+      a.fRhoJ += in.fRhoJ;
+      a.lOverRhoI += in.lOverRhoI;
+      a.lOverRhoJ += in.lOverRhoJ;
+      a.fQ += in.fQ;
+      ++out.terms;
+    }
+  }
   if (coulomb) {
-    // Tail of the regularised l = 0, q = 0 integrand below u_min (second order in t_min) and the
-    // convention constant 2 ln(alpha) + gamma_E that makes a remote line -2 lambda ln(rho).
-    const double tMin = alpha2 * std::exp(uMin);
-    const double a = tMin * rr, bb = 2 * tMin * rhoI * rhoJ;
-    Accumulator& a00 = blocks[0].acc[static_cast<size_t>(-blocks[0].kLow)];
-    a00.f += -a + 0.5 * (0.5 * a * a + 0.25 * bb * bb) + 2 * std::log(s.alpha) + kEulerGamma;
-    a00.fRhoI += -2 * tMin * rhoI + 0.5 * (2 * a * tMin * rhoI + bb * tMin * rhoJ);
-    a00.fRhoJ += -2 * tMin * rhoJ + 0.5 * (2 * a * tMin * rhoJ + bb * tMin * rhoI);
+    // The convention constant 2 ln(alpha) + gamma_E of eq. (E14): a remote line is -2 lambda ln(rho).
+    blocks[0].acc[static_cast<size_t>(-blocks[0].kLow)].f += 2 * std::log(s.alpha) + kEulerGamma;
   }
 
   // Assemble, eq. (E12): sum over l >= 0 (factor 2 for l > 0 covers -l, -k) and all k.
