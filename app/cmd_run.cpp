@@ -96,6 +96,7 @@ dftb::Calculator makeCalculator(const objective::CellInput& in) {
   s.scc.mixing = in.scc.mixing;
   s.scc.ewaldTolerance = in.scc.ewaldTolerance;
   s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
+  s.scc.warmStart = in.scc.warmStart;
   return dftb::Calculator(params, s);
 }
 

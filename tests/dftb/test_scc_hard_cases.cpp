@@ -1,6 +1,7 @@
 // Hard cases of the SCC loop: a metallic tube at low electronic temperature, charge sloshing in
 // a long polar cell (Broyden converges; simple mixing is reported, not silently wrong).
-// A tolerance beyond double precision is refused in test_scc.cpp (ToleranceBeyond...).
+// A tolerance beyond double precision is refused in test_scc.cpp (ToleranceBeyond...). And the
+// warm start of the loop from the charges of the previous evaluation.
 #include <cmath>
 #include <string>
 
@@ -112,4 +113,39 @@ TEST(SccHardCases, ChargeSloshingInALongCell) {
   // non-SCC density.
   EXPECT_LE(broyden.freeEnergy - broyden.repulsive,
             broyden.series.at("scc_history_energy").front() + 1e-12);
+}
+
+TEST(SccWarmStart, RelaxationLikeStepsNeedFewerIterations) {
+  // A sequence of nearby geometries (steps of a relaxation): warm-started loops take fewer
+  // iterations than loops from neutral atoms and reach the same energies and charges.
+  const auto params = mesochain::testing::chParameters();
+  auto s = mesochain::testing::sccSettings(300.0, 8);
+  const dftb::Calculator warm(params, s);
+  s.scc.warmStart = false;
+  const dftb::Calculator cold(params, s);
+  long warmIterations = 0, coldIterations = 0;
+  for (int step = 0; step < 4; ++step) {
+    auto cell = polarChain();
+    mesochain::testing::distort(cell, 0.02 * step);
+    const auto rw = warm.evaluate(cell, {true, false});
+    const auto rc = cold.evaluate(cell, {true, false});
+    EXPECT_EQ(rw.extras.at("scc_warm_start"), step > 0 ? 1.0 : 0.0);
+    EXPECT_EQ(rc.extras.at("scc_warm_start"), 0.0);
+    warmIterations += static_cast<long>(rw.extras.at("scc_iterations"));
+    coldIterations += static_cast<long>(rc.extras.at("scc_iterations"));
+    EXPECT_NEAR(rw.freeEnergy, rc.freeEnergy, 1e-10);
+    for (int a = 0; a < 4; ++a) {
+      EXPECT_NEAR(rw.series.at("mulliken_charges")[a], rc.series.at("mulliken_charges")[a], 1e-9);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(rw.gradient(k, a), rc.gradient(k, a), 1e-9);
+    }
+  }
+  EXPECT_LT(warmIterations, coldIterations);
+  EXPECT_EQ(warm.chargeCache().hits(), 3);
+  EXPECT_EQ(warm.chargeCache().iterations(), warmIterations);
+  // Different atoms (a supercell) do not take the cached charges.
+  const auto super = mesochain::testing::translationalSupercell(polarChain(), 2);
+  EXPECT_EQ(warm.evaluate(super, {}).extras.at("scc_warm_start"), 0.0);
+  // clear() forgets them.
+  warm.chargeCache().clear();
+  EXPECT_EQ(warm.evaluate(polarChain(), {}).extras.at("scc_warm_start"), 0.0);
 }
