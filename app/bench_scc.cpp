@@ -16,6 +16,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
+#include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {
 
@@ -78,6 +79,7 @@ int benchScc(const std::string& params, int repeats) {
       dftb::Result res;
       try {
         for (int r = 0; r < repeats; ++r) {
+          calc.chargeCache().clear();  // every repeat starts from neutral atoms
           const auto a = Clock::now();
           res = calc.evaluate(*cell, {true, false});
           t += std::chrono::duration<double>(Clock::now() - a).count() / repeats;
@@ -96,6 +98,30 @@ int benchScc(const std::string& params, int repeats) {
   }
   std::cout << "s/iter: one band solve with Mulliken charges; ratio: SCC evaluation (energy and "
                "forces) over the non-SCC one\n";
+
+  // Warm start across the evaluations of a relaxation (L-BFGS, forces < 1e-4 Ha/Bohr) of the
+  // puckered C60H60 ring unit (2 atoms + C_60): every loop from neutral atoms, or from the
+  // charges of the previous evaluation.
+  std::cout << fmt::format("\n{:<34} {:>6} {:>11} {:>10} {:>8} {:>18}\n", "relaxation, C60H60 ring unit",
+                           "evals", "SCC iter", "iter/eval", "time s", "F per atom (Ha)");
+  for (bool warm : {false, true}) {
+    dftb::CalculatorSettings s;
+    s.band.electronicTemperature = 300 * units::kBoltzmannHartreePerKelvin;
+    s.scc.enabled = true;
+    s.scc.chargeTolerance = 1e-8;
+    s.scc.warmStart = warm;
+    const dftb::Calculator calc(p, s);
+    objective::RelaxSettings rs;
+    rs.forceTolerance = 1e-4;
+    const auto a = Clock::now();
+    const auto out = objective::relax(calc, unit, rs);
+    const double t = std::chrono::duration<double>(Clock::now() - a).count();
+    const long it = calc.chargeCache().iterations();
+    std::cout << fmt::format("{:<34} {:>6} {:>11} {:>10.2f} {:>8.3f} {:>18.12f}\n",
+                             warm ? "warm start" : "from neutral atoms", out.evaluations, it,
+                             static_cast<double>(it) / out.evaluations, t,
+                             out.result.freeEnergy / unit.atomCount());
+  }
   return 0;
 }
 }  // namespace

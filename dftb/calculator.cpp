@@ -13,7 +13,8 @@ namespace mesochain::dftb {
 Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings)
     : params_(std::move(params)), settings_(settings) {
   if (settings_.scc.enabled)
-    terms_.push_back(std::make_unique<SccBandStructureTerm>(params_, settings_.band, settings_.scc));
+    terms_.push_back(std::make_unique<SccBandStructureTerm>(params_, settings_.band, settings_.scc,
+                                                            chargeCache_));
   else
     terms_.push_back(std::make_unique<BandStructureTerm>(params_, settings_.band));
   const ParameterSet* p = params_.get();

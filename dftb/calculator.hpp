@@ -1,7 +1,8 @@
 #pragma once
 // dftb::Calculator: the list of energy terms a cell asks for (band structure and repulsive
 // always; Lennard-Jones dispersion only when named), evaluated on an objective cell.
-// A term that is not asked for has no object and costs nothing.
+// A term that is not asked for has no object and costs nothing. With SCC, the calculator keeps
+// the last converged charges (ChargeCache) to warm-start the next evaluation of the same atoms.
 #include <map>
 #include <memory>
 #include <string>
@@ -56,12 +57,16 @@ class Calculator {
   const CalculatorSettings& settings() const { return settings_; }
   const ParameterSet& parameters() const { return *params_; }
   std::vector<std::string> termNames() const;
+  // Converged SCC charges kept between evaluations for the warm start (SccSettings::warmStart);
+  // clear() it to make the next evaluation start from neutral atoms.
+  ChargeCache& chargeCache() const { return *chargeCache_; }
 
  private:
   std::shared_ptr<const ParameterSet> params_;
   CalculatorSettings settings_;
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
   std::shared_ptr<const RadialPotential> lj_;
+  std::shared_ptr<ChargeCache> chargeCache_ = std::make_shared<ChargeCache>();
 };
 
 }  // namespace mesochain::dftb

@@ -49,8 +49,9 @@ std::string historyTable(const std::vector<double>& energy, const std::vector<do
 }  // namespace
 
 SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> params,
-                                           BandSettings band, SccSettings scc)
-    : params_(std::move(params)), band_(band), scc_(std::move(scc)) {
+                                           BandSettings band, SccSettings scc,
+                                           std::shared_ptr<ChargeCache> cache)
+    : params_(std::move(params)), band_(band), scc_(std::move(scc)), cache_(std::move(cache)) {
   if (!(band_.electronicTemperature > 0.0))
     throw InputError("<electrons>", "electrons.temperature",
                      std::to_string(band_.electronicTemperature), "a positive temperature");
@@ -95,6 +96,12 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
 
   auto mixer = makeChargeMixer(scc_.mixer, scc_.mixing);
   Eigen::VectorXd dqIn = Eigen::VectorXd::Zero(n), dqOut, v;
+  bool warm = false;
+  if (scc_.warmStart && cache_)
+    if (auto cached = cache_->lookup(cell.species)) {
+      dqIn = *cached;
+      warm = true;
+    }
   std::vector<OrbitalBlock> h(pairs.size());
   std::vector<double> energies, residuals;
   BandSolution sol;
@@ -153,12 +160,17 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
                              scc_.mixer.c_str(), scc_.mixing) +
                          historyTable(energies, residuals));
 
+  if (cache_) {
+    cache_->recordLoop(iterations);
+    if (converged && scc_.warmStart) cache_->store(cell.species, dqOut);
+  }
   out.energy = energy;
   reportBandSolution(geo, sol, kT, out);
   out.extras["h0_energy"] = h0Energy;
   out.extras["scc_energy"] = sccEnergy;
   out.extras["scc_iterations"] = iterations;
   out.extras["scc_converged"] = converged ? 1.0 : 0.0;
+  out.extras["scc_warm_start"] = warm ? 1.0 : 0.0;
   out.extras["scc_residual"] = residuals.back();
   out.extras["time_setup"] = std::chrono::duration<double>(t1 - t0).count();
   out.extras["time_scc_iterations"] = timeIterations;

@@ -17,6 +17,10 @@
 // Gradient (at self-consistency): P:dH0 - W:dS + 1/2 (V_i + V_j) P:dS + 1/2 dq (dgamma~) dq,
 // the middle terms through contractDerivatives with W' = W - 1/2 (V_i + V_j) P.
 //
+// Warm start (SccSettings::warmStart): the loop starts from the charges in the ChargeCache
+// (dftb/charge_cache.hpp) when they belong to a cell with the same atoms, else from neutral
+// atoms, and stores its converged charges there (extras scc_warm_start = 1 or 0).
+//
 // A loop that does not converge within max_iterations, or stagnates above the tolerance, throws
 // NumericalError with the history (or, when `stopIfUnconverged` is false, returns the last
 // iterate flagged scc_converged = 0 with the history).
@@ -24,6 +28,7 @@
 #include <string>
 
 #include "dftb/band_structure.hpp"
+#include "dftb/charge_cache.hpp"
 #include "dftb/coulomb_lattice_sum.hpp"
 #include "dftb/energy_term.hpp"
 #include "dftb/gamma_functional.hpp"
@@ -40,12 +45,14 @@ struct SccSettings {
   double mixing = 0.2;
   double ewaldTolerance = 1e-10;   // long-range 1/r sum and short-range image cutoff
   bool stopIfUnconverged = true;   // false: return the last iterate, flagged
+  bool warmStart = true;           // start from the cached charges of the last converged loop
 };
 
 class SccBandStructureTerm : public EnergyTerm {
  public:
+  // cache: where converged charges are kept between evaluations (may be null: no warm start).
   SccBandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings band,
-                       SccSettings scc);
+                       SccSettings scc, std::shared_ptr<ChargeCache> cache = nullptr);
   std::string name() const override { return "band"; }
   void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
                 TermOutput& out) const override;
@@ -59,6 +66,7 @@ class SccBandStructureTerm : public EnergyTerm {
   SccSettings scc_;
   std::unique_ptr<CoulombLatticeSum> coulomb_;
   std::unique_ptr<ShortRangeGammaSum> shortRange_;
+  std::shared_ptr<ChargeCache> cache_;
 };
 
 }  // namespace mesochain::dftb

@@ -183,7 +183,7 @@ void readScc(const TomlTable& root, CellInput& in) {
   const auto t = root.table("scc");
   if (!t) return;  // documented default: no SCC
   t->allowOnly({"enabled", "charge_tolerance", "energy_tolerance", "max_iterations", "mixer",
-                "mixing", "ewald_tolerance", "stop_if_unconverged"});
+                "mixing", "ewald_tolerance", "stop_if_unconverged", "warm_start"});
   SccInput& s = in.scc;
   if (t->has("enabled")) s.enabled = t->boolean("enabled", "true or false");
   auto bounded = [&](const char* key, double def, double lo, double hi, const char* what) {
@@ -212,6 +212,7 @@ void readScc(const TomlTable& root, CellInput& in) {
   }
   if (t->has("stop_if_unconverged"))
     s.stopIfUnconverged = t->boolean("stop_if_unconverged", "true or false");
+  if (t->has("warm_start")) s.warmStart = t->boolean("warm_start", "true or false");
 }
 
 void readTask(const TomlTable& root, CellInput& in) {

@@ -48,6 +48,7 @@ struct SccInput {
   double mixing = 0.2;
   double ewaldTolerance = 1e-10;
   bool stopIfUnconverged = true;
+  bool warmStart = true;  // start from the last converged charges of the same atoms
 };
 
 struct TaskInput {

@@ -105,9 +105,9 @@ void writeCellFile(const std::string& path, const CellInput& in) {
     out << fmt::format(
         "\n[scc]\nenabled = true\ncharge_tolerance = {}  # e\nenergy_tolerance = {}  # Ha\n"
         "max_iterations = {}\nmixer = {}\nmixing = {}\newald_tolerance = {}\n"
-        "stop_if_unconverged = {}\n",
+        "stop_if_unconverged = {}\nwarm_start = {}\n",
         real(sc.chargeTolerance), real(sc.energyTolerance), sc.maxIterations, quoted(sc.mixer),
-        real(sc.mixing), real(sc.ewaldTolerance), sc.stopIfUnconverged);
+        real(sc.mixing), real(sc.ewaldTolerance), sc.stopIfUnconverged, sc.warmStart);
   const TaskInput& t = in.task;
   out << "\n[task]\ntype = " << quoted(t.type) << "\n";
   if (t.type == "relax")

@@ -28,6 +28,7 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
   s.scc.mixing = in.scc.mixing;
   s.scc.ewaldTolerance = in.scc.ewaldTolerance;
   s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
+  s.scc.warmStart = in.scc.warmStart;
   return s;
 }
 

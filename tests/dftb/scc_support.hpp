@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
@@ -95,6 +96,50 @@ inline objective::ObjectiveCell translationalSupercell(const objective::Objectiv
           cell.symmetry.apply(objective::GroupElement{z, 0}, cell.positions.col(a));
     }
   return out;
+}
+
+// One translational unit (length 3 a_cc) of an H-terminated armchair graphene nanoribbon with
+// `dimerLines` C columns across the width (the N of N-AGNR: 2N C and 4 H per unit), axis z,
+// twisted by `twist` (rad) per unit: every atom of the flat ribbon at height z is turned by
+// twist z / T about the axis, and the screw (T, twist) repeats the unit. H sits on the missing
+// graphene bond of each edge C at 1.09 A. Slightly distorted so no force vanishes by symmetry.
+inline objective::ObjectiveCell twistedArmchairRibbonUnit(int dimerLines, double twist) {
+  const double b = 1.0 / 0.529177249, acc = 1.42 * b, a = std::sqrt(3.0) * acc;
+  const double period = 3 * acc, xMax = (dimerLines - 1) * a / 2, eps = 1e-6;
+  const double xMid = xMax / 2;
+  auto inWidth = [&](double x) { return x > -eps && x < xMax + eps; };
+  objective::ObjectiveCell cell;
+  cell.symmetry = objective::Symmetry::screw(period, twist, 1);
+  auto place = [&](const std::string& el, double x, double z) {
+    // Flat ribbon in the x-z plane, centred on the axis, then twisted.
+    const double angle = twist * z / period, u = x - xMid;
+    const int k = cell.atomCount();
+    cell.addAtom(el, {u * std::cos(angle) + 0.02 * std::sin(1.3 * k),
+                      u * std::sin(angle) + 0.03 * std::cos(2.1 * k), z + 0.02 * std::sin(0.7 * k)});
+  };
+  std::vector<Eigen::Vector2d> carbons;
+  for (int i = -2 * dimerLines; i <= 2 * dimerLines; ++i)
+    for (int j = -4; j <= 4; ++j) {
+      const Eigen::Vector2d base(i * a + j * a / 2, j * 1.5 * acc);  // i a1 + j a2
+      for (const Eigen::Vector2d& r : {base, Eigen::Vector2d(base + Eigen::Vector2d(0, acc))})
+        if (inWidth(r.x()) && r.y() > -eps && r.y() < period - eps) carbons.push_back(r);
+    }
+  for (const auto& c : carbons) place("C", c.x(), c.y());
+  for (const auto& c : carbons) {
+    // Graphene neighbours of c (sublattice A: up, lower-left, lower-right; B: the reverse).
+    const bool sublatticeA = [&] {
+      const double j = std::round(c.y() / (1.5 * acc));
+      return std::abs(c.y() - j * 1.5 * acc) < 1e-6;
+    }();
+    const double s = sublatticeA ? 1.0 : -1.0;
+    for (const Eigen::Vector2d& d : {Eigen::Vector2d(0, s * acc), Eigen::Vector2d(-a / 2, -s * acc / 2),
+                                     Eigen::Vector2d(a / 2, -s * acc / 2)})
+      if (!inWidth(c.x() + d.x())) {
+        const Eigen::Vector2d h = c + (1.09 / 1.42) * d;
+        place("H", h.x(), h.y());
+      }
+  }
+  return cell;
 }
 
 }  // namespace mesochain::testing

@@ -1,6 +1,7 @@
 // SCC on screw cells through the helical Ewald sum: a helical CH chain against its
 // translational supercell, finite-difference forces with respect to positions, T and gamma, and
-// a neutral carbon tube where SCC and non-SCC nearly agree.
+// a neutral carbon tube where SCC and non-SCC nearly agree, and a twisted H-terminated armchair
+// graphene nanoribbon against its translational supercell.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -73,3 +74,43 @@ TEST(SccHelical, NeutralCarbonTubeNearlyAgreesWithNonScc) {
   EXPECT_LE(scc.freeEnergy, first.freeEnergy + 1e-12);
   EXPECT_GT(first.freeEnergy - plain.freeEnergy, 0.0);  // the non-SCC density has charges
 }
+
+TEST(SccHelical, TwistedRibbonEqualsItsTranslationalSupercell) {
+  // H-terminated 3-AGNR twisted by 60 degrees per unit (4.26 A): 6 units close a full turn, so
+  // the helical cell (10 atoms, screw T, 2 pi / 6) is the same structure as its 60-atom
+  // translational supercell. C-H charge transfer and the twist make the charges differ per atom.
+  const auto unit = mesochain::testing::twistedArmchairRibbonUnit(3, 2 * units::kPi / 6);
+  ASSERT_EQ(unit.atomCount(), 10);
+  const auto super = mesochain::testing::translationalSupercell(unit, 6);
+  double closest = 1e9;  // sanity of the built geometry (Bohr): no overlapping atoms
+  for (int i = 0; i < super.atomCount(); ++i)
+    for (int j = 0; j < i; ++j)
+      closest = std::min(closest, (super.positions.col(i) - super.positions.col(j)).norm());
+  ASSERT_GT(closest, 1.9);
+  // Matched k-points: 12 kappa points of the unit <-> 2 of the 6-unit cell.
+  const auto ru = mesochain::testing::sccCalculator(300.0, 12).evaluate(unit, {true, true});
+  const auto rs = mesochain::testing::sccCalculator(300.0, 2).evaluate(super, {true, false});
+  const auto& qu = ru.series.at("mulliken_charges");
+  const auto& qs = rs.series.at("mulliken_charges");
+  double maxH = 0;
+  for (int a = 0; a < 10; ++a)
+    if (unit.species[a] == unit.species[9]) maxH = std::max(maxH, std::abs(qu[a]));
+  EXPECT_GT(maxH, 0.05);  // real charge transfer to/from the H
+  EXPECT_NEAR(ru.freeEnergy / 10, rs.freeEnergy / 60, 1e-7);
+  EXPECT_NEAR(ru.extras.at("scc_energy") / 10, rs.extras.at("scc_energy") / 60, 1e-7);
+  for (int c = 0; c < 6; ++c)
+    for (int a = 0; a < 10; ++a) EXPECT_NEAR(qu[a], qs[10 * c + a], 1e-7) << c << " " << a;
+  for (int a = 0; a < 10; ++a)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(ru.gradient(k, a), rs.gradient(k, a), 1e-7);
+  // The torque dF/dgamma of the twisted ribbon against a central difference.
+  const double h = 1e-4;
+  auto gp = unit, gm = unit;
+  gp.symmetry = unit.symmetry.withTwist(unit.symmetry.twist() + h);
+  gm.symmetry = unit.symmetry.withTwist(unit.symmetry.twist() - h);
+  const auto calc = mesochain::testing::sccCalculator(300.0, 12);
+  EXPECT_NEAR(ru.dFdTwist,
+              (calc.evaluate(gp, {}).freeEnergy - calc.evaluate(gm, {}).freeEnergy) / (2 * h), 5e-8);
+  // Not a trivial zero (at fixed cell atoms the sign depends on the unit's internal twist).
+  EXPECT_GT(std::abs(ru.dFdTwist), 1e-4);
+}
+
