@@ -186,7 +186,7 @@ Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCel
     p.splitting = *st.splitting;
   } else {
     double best = std::numeric_limits<double>::infinity();
-    for (double a = 1e-3; a < 5.0; a *= 1.04) {
+    for (double a = std::min(1e-3, 1 / T); a < 5.0; a *= 1.04) {
       const double c = modelledPairCost(a, tol, T, na, rhoMax);
       if (c < best) best = c, p.splitting = a;
     }
