@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -161,5 +162,46 @@ TEST(EwaldRobustness, LimitsThrowInsteadOfTruncating) {
     ADD_FAILURE() << "no error for radius 4e4 Bohr at alpha = 3";
   } catch (const NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("angular orders"), std::string::npos) << e.what();
+  }
+}
+
+TEST(EwaldRobustness, RandomCellsMeetTheRequestedTolerance) {
+  // 200 random cells (T 0.3..200 Bohr, N_a in {1, 2, 5, 12, 100}, sites at random radii, some on
+  // the axis, some with |gamma| ~ 1e-9) against the same sum at 1e-13 with a different
+  // splitting parameter. Energies must meet the tolerance; matrix elements their budget
+  // tol K(d_min) / N_o, or for very dense Coulomb cells (elements ~ 2 N_a / T ln rho ~ 1e3)
+  // the double-precision floor of the largest element.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int orders[] = {1, 2, 5, 12, 100};
+  for (int trial = 0; trial < 200; ++trial) {
+    const int na = orders[trial % 5];
+    const double T = std::exp(std::log(0.3) + u(rng) * std::log(200 / 0.3));
+    const double gamma = (u(rng) - 0.5) * 6.3 * (trial % 7 == 0 ? 1e-9 : 1);
+    ObjectiveCell c;
+    c.symmetry = Symmetry::screw(T, gamma, na);
+    const double rmax = na >= 12 ? 15 + na * 0.15 : 8;
+    for (int i = 0; i < 4; ++i) {
+      const double r = (i == 0 && na == 1 && trial % 3 == 0) ? 0.0 : 0.5 + u(rng) * rmax;
+      const double p = u(rng) * 2 * M_PI;
+      c.addAtom("C", {r * std::cos(p), r * std::sin(p), u(rng) * T});
+    }
+    const Eigen::VectorXd q = ewaldtest::sampleCharges();
+    for (Kernel k : {Kernel::Coulomb, Kernel::InverseSixth}) {
+      const bool coulomb = k == Kernel::Coulomb;
+      const auto plan = HelicalLatticeSum(k, {1e-13, {}}).plan(c);
+      const Eigen::MatrixXd ref = phi(k, c, 1e-13, 1.7 * plan.splitting);
+      const Eigen::VectorXd w = coulomb ? q : Eigen::VectorXd(q.cwiseAbs());
+      const double eRef = 0.5 * w.dot(ref * w);
+      const double kMin = coulomb ? 1 / plan.shortestDistance : std::pow(plan.shortestDistance, -6);
+      for (double tol : {1e-4, 1e-8, 1e-12}) {
+        const Eigen::MatrixXd m = phi(k, c, tol);
+        const std::string where = "trial " + std::to_string(trial) + " N_a " + std::to_string(na) +
+                                  " T " + std::to_string(T) + " tol " + std::to_string(tol);
+        EXPECT_LT(std::abs(0.5 * w.dot(m * w) - eRef), tol * std::abs(eRef)) << where;
+        const double budget = std::max(tol * kMin / 4, 4e-15 * ref.cwiseAbs().maxCoeff());
+        EXPECT_LT((m - ref).cwiseAbs().maxCoeff(), budget) << where;
+      }
+    }
   }
 }
