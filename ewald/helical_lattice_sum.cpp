@@ -40,12 +40,18 @@ double shortKernel(Kernel k, double alpha, double r) {
   const double a = alpha * alpha * r * r;
   return std::exp(-a) * (1 + a + 0.5 * a * a) / std::pow(r, 6);
 }
-double shortKernelDerivative(Kernel k, double alpha, double r) {
-  if (k == Kernel::Coulomb)
-    return -std::erfc(alpha * r) / (r * r) -
-           2 * alpha / std::sqrt(kPi) * std::exp(-alpha * alpha * r * r) / r;
-  const double a = alpha * alpha * r * r;
-  return -alpha * alpha * a * a * std::exp(-a) / std::pow(r, 5) - 6 * shortKernel(k, alpha, r) / r;
+// Both at once (one erfc / exp): value K_s(r) and derivative dK_s/dr.
+void shortKernelWithDerivative(Kernel k, double alpha, double r, double& value, double& derivative) {
+  if (k == Kernel::Coulomb) {
+    const double e = std::erfc(alpha * r);
+    value = e / r;
+    derivative = -value / r - 2 * alpha / std::sqrt(kPi) * std::exp(-alpha * alpha * r * r) / r;
+    return;
+  }
+  const double a = alpha * alpha * r * r, ex = std::exp(-a);
+  const double r2 = r * r, r5 = r2 * r2 * r;
+  value = ex * (1 + a + 0.5 * a * a) / (r5 * r);
+  derivative = -alpha * alpha * a * a * ex / r5 - 6 * value / r;
 }
 // The identity image's long-range part, int_0^{alpha^2} w(t) dt, eq. (E15).
 double selfLongRange(Kernel k, double alpha) {
@@ -104,7 +110,8 @@ struct Resolved {
 };
 
 // Real-space images g x_j within r_c of x_i, eq. (E4) (the same set as
-// objective::forEachImageNear): one sincos per screw power zeta, composed with the table of the
+// objective::forEachImageNear), passed as f(g, y, cos, sin of the rotation angle of g): one
+// sincos per screw power zeta, composed with the table of the
 // C_Na rotations; for N_a > 8 only the rotations whose in-plane angle can bring the image within
 // r_c (|phi_i - phi_j - zeta gamma - 2 pi c / N_a| <= theta, cos theta = (rho_i^2 + rho_j^2 -
 // r_c^2 + dz^2) / (2 rho_i rho_j)), padded by one on each side; every image is still tested.
@@ -141,7 +148,8 @@ void forEachRealSpaceImage(const Symmetry& sym, const std::vector<std::array<dou
     for (long cc = cLo; cc <= cHi; ++cc) {
       const int c = static_cast<int>(((cc % na) + na) % na);
       const Eigen::Vector3d y(rot[c][0] * bx - rot[c][1] * by, rot[c][1] * bx + rot[c][0] * by, z);
-      if ((y - xi).squaredNorm() < rc2) f(GroupElement{zeta, c}, y);
+      if ((y - xi).squaredNorm() < rc2)
+        f(GroupElement{zeta, c}, y, cz * rot[c][0] - sz * rot[c][1], sz * rot[c][0] + cz * rot[c][1]);
     }
   }
 }
@@ -178,7 +186,7 @@ Resolved resolve(Kernel kernel, const LatticeSumSettings& st, const ObjectiveCel
     p.splitting = *st.splitting;
   } else {
     double best = std::numeric_limits<double>::infinity();
-    for (double a = 1e-3; a < 5.0; a *= 1.04) {
+    for (double a = std::min(1e-3, 1 / T); a < 5.0; a *= 1.04) {
       const double c = modelledPairCost(a, tol, T, na, rhoMax);
       if (c < best) best = c, p.splitting = a;
     }
@@ -240,18 +248,25 @@ PairResult pairSum(Kernel kernel, const Resolved& r, const ObjectiveCell& cell, 
   const double alpha = r.plan.splitting;
   // Real-space part, eq. (E4).
   forEachRealSpaceImage(
-      sym, r.rotations, xi, xj, r.plan.realSpaceCutoff, [&](const GroupElement& g, const Eigen::Vector3d& y) {
+      sym, r.rotations, xi, xj, r.plan.realSpaceCutoff,
+      [&](const GroupElement& g, const Eigen::Vector3d& y, double ca, double sa) {
         if (i == j && g.isIdentity()) return;
         const Eigen::Vector3d d = y - xi;
         const double dist = d.norm();
-        out.value += shortKernel(kernel, alpha, dist);
-        if (!withDerivatives) return;
-        const Eigen::Vector3d u = shortKernelDerivative(kernel, alpha, dist) / dist * d;
+        if (!withDerivatives) {
+          out.value += shortKernel(kernel, alpha, dist);
+          return;
+        }
+        double value, derivative;
+        shortKernelWithDerivative(kernel, alpha, dist, value, derivative);
+        out.value += value;
+        const Eigen::Vector3d u = derivative / dist * d;
+        const double zeta = static_cast<double>(g.zeta);
         out.gradI -= u;
-        out.gradJ += sym.rotation(g).transpose() * u;
-        out.dT += u.z() * static_cast<double>(g.zeta);
-        out.dGamma += u.dot(objective::rotationZDerivative(sym.angle(g)) * xj) *
-                      static_cast<double>(g.zeta);
+        // R(angle)^T u, and d(g x_j)/d gamma = zeta R'(angle) x_j = zeta (-y_y, y_x, 0).
+        out.gradJ += Eigen::Vector3d(ca * u.x() + sa * u.y(), -sa * u.x() + ca * u.y(), u.z());
+        out.dT += u.z() * zeta;
+        out.dGamma += (u.y() * y.x() - u.x() * y.y()) * zeta;
       });
   // Long-range part, eq. (E12).
   const Site si = site(xi), sj = site(xj);

@@ -1,7 +1,7 @@
 #pragma once
 // Long-range (smooth) part of the helical Ewald sum for one pair of cell sites: the Gaussian
 // superposition of the split kernel, Poisson-summed over the screw index (docs/ewald.md,
-// eqs. (E6)-(E13)). Internal to ewald/.
+// eqs. (E6)-(E13); the part t < t_c in closed form, eqs. (E18)-(E20)). Internal to ewald/.
 #include <vector>
 
 #include "ewald/helical_lattice_sum.hpp"

@@ -1,6 +1,8 @@
 #pragma once
 // Small objective cells for the Ewald tests (Bohr): charged sites at several radii, one on the
 // screw axis.
+#include <vector>
+
 #include "objective/core/cell.hpp"
 
 namespace ewaldtest {
@@ -18,6 +20,28 @@ inline ObjectiveCell sampleCell(const Symmetry& s) {
   c.addAtom("H", {off, 0.5 * off, -0.7});
   c.addAtom("H", {0.9, -4.2, 1.1});
   return c;
+}
+
+// Cell whose atoms are the images g_m(x_j) of `cell` under the listed elements, with symmetry s.
+inline ObjectiveCell expanded(const ObjectiveCell& cell,
+                              const std::vector<mesochain::objective::GroupElement>& gs,
+                              const Symmetry& s) {
+  ObjectiveCell out;
+  out.symmetry = s;
+  for (const auto& g : gs)
+    for (int j = 0; j < cell.atomCount(); ++j)
+      out.addAtom(cell.speciesOf(j), cell.symmetry.apply(g, cell.positions.col(j)));
+  return out;
+}
+
+// Phi of the small cell from the expanded one: Phi_ij = sum_m PhiBig(i, m*N_o + j) (first copy
+// is the identity).
+inline Eigen::MatrixXd folded(const Eigen::MatrixXd& big, int no, int copies) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(no, no);
+  for (int i = 0; i < no; ++i)
+    for (int j = 0; j < no; ++j)
+      for (int c = 0; c < copies; ++c) m(i, j) += big(i, c * no + j);
+  return m;
 }
 
 inline Eigen::VectorXd sampleCharges() {

@@ -29,27 +29,6 @@ Eigen::MatrixXd phi(Kernel k, const ObjectiveCell& cell, double tol = 1e-12,
   return HelicalLatticeSum(k, st).matrix(cell);
 }
 
-// Cell whose atoms are the images g_m(x_j) of `cell` under the listed elements, with symmetry s.
-ObjectiveCell expanded(const ObjectiveCell& cell, const std::vector<GroupElement>& gs,
-                       const Symmetry& s) {
-  ObjectiveCell out;
-  out.symmetry = s;
-  for (const auto& g : gs)
-    for (int j = 0; j < cell.atomCount(); ++j)
-      out.addAtom(cell.speciesOf(j), cell.symmetry.apply(g, cell.positions.col(j)));
-  return out;
-}
-
-// Phi of the small cell from the expanded one: Phi_ij = sum_m PhiBig(i, m*N_o + j) (first copy
-// is the identity).
-Eigen::MatrixXd folded(const Eigen::MatrixXd& big, int no, int copies) {
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(no, no);
-  for (int i = 0; i < no; ++i)
-    for (int j = 0; j < no; ++j)
-      for (int c = 0; c < copies; ++c) m(i, j) += big(i, c * no + j);
-  return m;
-}
-
 double scaleOf(const Eigen::MatrixXd& m) { return m.cwiseAbs().maxCoeff(); }
 
 }  // namespace
@@ -72,9 +51,9 @@ TEST(EwaldEquivalence, RotationSubgroupEqualsExplicitCopies) {
     const auto cell = ewaldtest::sampleCell(Symmetry::screw(4.7, 0.45, na));
     std::vector<GroupElement> gs;
     for (int c = 0; c < na; ++c) gs.push_back({0, c});
-    const auto big = expanded(cell, gs, Symmetry::screw(4.7, 0.45, 1));
+    const auto big = ewaldtest::expanded(cell, gs, Symmetry::screw(4.7, 0.45, 1));
     const Eigen::MatrixXd small = phi(k, cell);
-    const Eigen::MatrixXd ref = folded(phi(k, big), cell.atomCount(), na);
+    const Eigen::MatrixXd ref = ewaldtest::folded(phi(k, big), cell.atomCount(), na);
     EXPECT_LT((small - ref).cwiseAbs().maxCoeff(), 1e-10 * scaleOf(small));
   }
 }
@@ -86,9 +65,9 @@ TEST(EwaldEquivalence, CommensurateHelixEqualsTranslationalSupercell) {
     const auto cell = ewaldtest::sampleCell(Symmetry::screw(T, gamma, 1));
     std::vector<GroupElement> gs;
     for (long z = 0; z < 5; ++z) gs.push_back({z, 0});
-    const auto big = expanded(cell, gs, Symmetry::screw(5 * T, 0.0, 1));
+    const auto big = ewaldtest::expanded(cell, gs, Symmetry::screw(5 * T, 0.0, 1));
     const Eigen::MatrixXd small = phi(k, cell);
-    const Eigen::MatrixXd ref = folded(phi(k, big), cell.atomCount(), 5);
+    const Eigen::MatrixXd ref = ewaldtest::folded(phi(k, big), cell.atomCount(), 5);
     EXPECT_LT((small - ref).cwiseAbs().maxCoeff(), 1e-10 * scaleOf(small));
   }
 }
