@@ -15,6 +15,7 @@
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/effect.hpp"
 #include "mdem/scene.hpp"
+#include "mdem/stability.hpp"
 
 namespace mesochain::mdem {
 
@@ -94,6 +95,22 @@ struct ContactEffects {
   std::shared_ptr<ContactNeighbourhood> neighbourhood;
 };
 ContactEffects makeContactEffects(const Scene& scene);
+
+// Contact terms of the critical time step (stability.hpp), per element type. Contacts change
+// during a run, so each element is taken as crowded: in contact along its whole length with
+// kContactCoordination neighbouring tubes (a close-packed bundle), each contact counted twice
+// (Gershgorin: the element's own row and its coupling to the neighbour).
+//  * vdW: the curvature Phi'' of the tube-tube potential at its minimum (the stiffest point of
+//    the well), per unit length: stiffness 2 n Phi'' L, and about the axes normal to the element
+//    2 n Phi'' L^3 / 12 (the contact resists tilting); none about the element's axis.
+//  * dashpots: contact length lambda = L + R + R_max (aligned overlap plus the crossing term,
+//    an upper bound), lever arm r of the contact point from the centre (sqrt((L/2)^2 + R_c^2)
+//    about the normal axes, R_c = R + full_gap/2 about the element's axis): translational
+//    2 n gamma lambda, rotational 2 n (gamma lambda r^2 + gamma_r lambda).
+// Measured (docs/mdem-contacts.md): two crossed tubes at h = 2e-5 ns blow up for gamma between 5
+// and 10 pN ns/nm^2; this estimate admits gamma up to about 2.7 there.
+inline constexpr int kContactCoordination = 6;
+std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, const ContactEffects& effects);
 
 // Pairs in van der Waals contact (wall gap of the closest points below maxGap) whose axes make
 // an angle below maxAngle (either direction): the "aligned pairs" of the tensile analysis.
