@@ -55,6 +55,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   RunSummary r;
   r.timeStep = sim.timeStep();
   r.criticalTimeStep = sim.stability().criticalTimeStep;
+  r.dissipatedTracked = sim.effect("contact_damping") != nullptr;
   record(true);
   const long every = std::max(1L, scene.run.steps / 200);
   const bool frames = xyz.is_open() || !vtkPrefix.empty();

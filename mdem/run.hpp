@@ -15,6 +15,7 @@ struct RunSummary {
   Energies finalEnergies;
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
+  bool dissipatedTracked = false;  // the scene has contact dashpots
 };
 
 // Progress callback receives the fraction of the maximum step count done.

@@ -162,14 +162,26 @@ void ContactDampingEffect::addForces(State& state) {
   const auto& pairs = nb_->list().pairs();
   const int np = static_cast<int>(pairs.size());
   results_.resize(np);
-#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
+  double power = 0.0;  // dissipated, >= 0
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : power) if (np > 256)
   for (int p = 0; p < np; ++p) {
     const int i = pairs[p].first, j = pairs[p].second;
     const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
-    results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]), s.velocity[i],
-                                 s.angularVelocityWorld(i), s.velocity[j], s.angularVelocityWorld(j));
+    const Vec3 wi = s.angularVelocityWorld(i), wj = s.angularVelocityWorld(j);
+    const ContactPairResult& r = results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]),
+                                                               nb_->radius(s.type[j]), s.velocity[i], wi,
+                                                               s.velocity[j], wj);
+    power -= r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj);
   }
   gather(nb_->list(), results_, s);
+  dissipated_ += power * (state.time - lastTime_);
+  lastTime_ = state.time;
+}
+
+Energies ContactDampingEffect::energy(const State&) const {
+  Energies e;
+  e.contactDissipated = dissipated_;
+  return e;
 }
 
 ContactEffects makeContactEffects(const Scene& scene) {

@@ -79,10 +79,14 @@ class ContactDampingEffect : public Effect {
   ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
   std::string name() const override { return "contact_damping"; }
   void addForces(State& state) override;
-  Energies energy(const State&) const override { return {}; }
+  // Stores nothing; reports the dissipated work in Energies::contactDissipated.
+  Energies energy(const State&) const override;
   static double interactionRange(const Scene& scene);
 
  private:
+  // Work: each force evaluation at time t charges its power (sum over pairs of
+  // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one.
+  double dissipated_ = 0.0, lastTime_ = 0.0;
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;
   std::vector<ContactPairResult> results_;

@@ -90,10 +90,13 @@ TEST(MdemContactStability, UnstableDashpotIsRefusedAStableOneRuns) {
   }
   Simulation sim(crossed(2.0));
   const Energies e0 = sim.energies();
-  double highest = e0.total();
+  double highest = e0.total(), imbalance = 0.0;
   for (int k = 0; k < 40; ++k) {
     sim.run(100);
-    highest = std::max(highest, sim.energies().total());
+    const Energies e = sim.energies();
+    highest = std::max(highest, e.total());
+    // The dashpots' tracked work closes the energy balance.
+    imbalance = std::max(imbalance, std::abs(e.total() + e.contactDissipated - e0.total()));
   }
   const Energies e = sim.energies();
   std::printf("gamma 2 at h 2e-5: critical %.4g ns; E %.3f -> %.3f zJ (highest %.3f)\n",
@@ -102,6 +105,9 @@ TEST(MdemContactStability, UnstableDashpotIsRefusedAStableOneRuns) {
   // Dashpots only dissipate: the total never rises above the start by more than Verlet's error.
   EXPECT_LT(highest - e0.total(), 0.01 * std::abs(e0.vdw));
   EXPECT_LT(e.total(), e0.total());
+  std::printf("dissipated %.3f zJ, largest imbalance of E + W_dissipated %.3g zJ\n", e.contactDissipated, imbalance);
+  EXPECT_GT(e.contactDissipated, 0.5 * (e0.total() - e.total()));
+  EXPECT_LT(imbalance, 0.01 * e.contactDissipated);
 }
 
 }  // namespace
