@@ -56,6 +56,7 @@ struct Scene {
   Boundary boundary;
   Periodicity periodic;               // used by contacts (positions are never wrapped)
   ContactSpec contacts;               // parameters of vdw_contact / contact_damping
+  Vec3 filmSize = Vec3::Zero();       // nm, the [network] film (zero without a network)
   RunControl run;
   OutputSpec output;
 };

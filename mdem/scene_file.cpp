@@ -270,7 +270,7 @@ Scene loadScene(const std::string& path) {
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
                   "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
-                  "periodic"});
+                  "periodic", "network"});
   if (root.integer("format") != 1)
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
@@ -291,6 +291,7 @@ Scene loadScene(const std::string& path) {
   readElements(root, s);
   readFilaments(root, s);
   readBonds(root, s);
+  readNetworkTable(root, s);
   readBoundary(root, s);
   if (root.has("local_damping")) {
     const TomlTable t = root.table("local_damping");
