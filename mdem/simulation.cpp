@@ -143,6 +143,15 @@ const std::vector<Bond>& Simulation::bonds() const {
   return bondEffect_ ? bondEffect_->bonds() : kNone;
 }
 
+std::vector<Vec3> Simulation::unconstrainedForces() const {
+  State copy = state_;
+  std::fill(copy.bodies.force.begin(), copy.bodies.force.end(), Vec3::Zero());
+  std::fill(copy.bodies.torque.begin(), copy.bodies.torque.end(), Vec3::Zero());
+  for (const auto& e : effects_)
+    if (e->name() != "local_damping" && e->name() != "viscous_damping") e->addForces(copy);
+  return copy.bodies.force;
+}
+
 std::pair<double, double> Simulation::residual() {
   const std::vector<Vec3> force = state_.bodies.force, torque = state_.bodies.torque;
   computeForces(false);

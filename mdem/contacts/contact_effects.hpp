@@ -58,6 +58,7 @@ class VdwContactEffect : public Effect {
   const TubePairPotential& potential(int typeA, int typeB) const;
   double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
   double neighbourSeconds() const { return nb_->seconds; }
+  const ContactNeighbourhood& neighbourhood() const { return *nb_; }
   long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
 
  private:
