@@ -57,9 +57,15 @@ Command makeDemCommand() {
         r.stoppedByCriterion ? ", stopped: kinetic energy below threshold" : "");
     std::cout << fmt::format(
         "energies (zJ): kinetic {:.8g} + {:.8g} (rot), stretching {:.8g}, shearing {:.8g}, "
-        "twisting {:.8g}, bending {:.8g}; outputs in {}\n",
+        "twisting {:.8g}, bending {:.8g}, van der Waals {:.8g}, total {:.8g}{}; outputs in {}\n",
         e.kineticTranslational, e.kineticRotational, e.bonds.stretching, e.bonds.shearing,
-        e.bonds.twisting, e.bonds.bending, dir);
+        e.bonds.twisting, e.bonds.bending, e.vdw, e.total(),
+        r.dissipatedTracked ? fmt::format(" (dissipated by dashpots {:.8g})", e.contactDissipated) : "", dir);
+    if (r.tensile)
+      std::cout << fmt::format("tensile: strain {:.6g}, stress {:.6g} MPa (peak {:.6g} MPa, at zero strain {:.6g} MPa), "
+                               "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
+                               r.finalStrain, r.finalStress, r.peakStress, r.initialStress, scene.tensile.crossSection,
+                               scene.tensile.gaugeLength, (std::filesystem::path(dir) / scene.tensile.csv).string());
     if (!scene.output.plotPng.empty())
       std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";
     return 0;

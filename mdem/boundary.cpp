@@ -47,7 +47,7 @@ void KinematicMap::applyElement(Bodies& s, int i, double t) const {
   const FixedDofs* f = fixed[i];
   if (!f) return;
   for (int d = 0; d < 3; ++d)
-    if (f->fixed[d]) s.velocity[i][d] = 0.0;
+    if (f->fixed[d]) s.velocity[i][d] = f->velocity[d] * rampFactor(t, f->ramp);
   if (f->allRotationsFixed()) {
     s.angularMomentumBody[i].setZero();
   } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {

@@ -11,9 +11,13 @@
 namespace mesochain::mdem {
 
 // DOF order: x, y, z (translation), rx, ry, rz (rotation about the world axes).
+// Fixed translations may move at a prescribed velocity (the grips of a tensile test):
+// v_d(t) = velocity_d * min(1, t / ramp) on each fixed translation d (0 by default: held).
 struct FixedDofs {
   int element = -1;
   std::array<bool, 6> fixed{};
+  Vec3 velocity = Vec3::Zero();  // nm/ns
+  double ramp = 0.0;             // ns
   bool allRotationsFixed() const { return fixed[3] && fixed[4] && fixed[5]; }
 };
 

@@ -24,6 +24,9 @@ struct Energies {
   BondEnergy bonds;
   double loadPotential = 0.0;  // -F.u - M.theta of fixed-direction loads (0 for others)
   double vdw = 0.0;            // van der Waals contacts between elements (mdem/contacts)
+  // Work dissipated so far by the contact dashpots (zJ, >= 0): not stored energy, so not part of
+  // total(); total() + contactDissipated is conserved without other damping.
+  double contactDissipated = 0.0;
 
   double potential() const { return bonds.total() + loadPotential + vdw; }
   double total() const { return kineticTranslational + kineticRotational + potential(); }
@@ -33,6 +36,7 @@ struct Energies {
     bonds += o.bonds;
     loadPotential += o.loadPotential;
     vdw += o.vdw;
+    contactDissipated += o.contactDissipated;
     return *this;
   }
 };

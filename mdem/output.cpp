@@ -11,7 +11,7 @@ EnergyCsvWriter::EnergyCsvWriter(const std::string& path, std::vector<int> probe
     : out_(path), probes_(std::move(probes)) {
   if (!out_) throw InputError(path, "", "a file that cannot be written", "a writable path");
   out_ << "step,time_ns,kinetic_translational_zJ,kinetic_rotational_zJ,stretching_zJ,"
-          "shearing_zJ,twisting_zJ,bending_zJ,load_potential_zJ,total_zJ";
+          "shearing_zJ,twisting_zJ,bending_zJ,load_potential_zJ,vdw_zJ,total_zJ,contact_dissipated_zJ";
   for (int p : probes_)
     for (const char* c : {"ux_nm", "uy_nm", "uz_nm", "rx_rad", "ry_rad", "rz_rad"})
       out_ << ",p" << p << "_" << c;
@@ -19,10 +19,10 @@ EnergyCsvWriter::EnergyCsvWriter(const std::string& path, std::vector<int> probe
 }
 
 void EnergyCsvWriter::write(long step, double time, const Energies& e, const Bodies& b) {
-  out_ << fmt::format("{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}",
+  out_ << fmt::format("{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}",
                       step, time, e.kineticTranslational, e.kineticRotational, e.bonds.stretching,
-                      e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.loadPotential,
-                      e.total());
+                      e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.loadPotential, e.vdw,
+                      e.total(), e.contactDissipated);
   for (int p : probes_) {
     const Vec3 u = b.position[p] - b.initialPosition[p];
     const Vec3& r = b.accumulatedRotation[p];

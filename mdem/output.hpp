@@ -12,7 +12,8 @@
 namespace mesochain::mdem {
 
 // Columns: step, time_ns, kinetic_translational_zJ, kinetic_rotational_zJ, stretching_zJ,
-// shearing_zJ, twisting_zJ, bending_zJ, load_potential_zJ, total_zJ, then for each probe
+// shearing_zJ, twisting_zJ, bending_zJ, load_potential_zJ, vdw_zJ, total_zJ,
+// contact_dissipated_zJ (work of the dashpots so far, not in the total), then for each probe
 // element p: p<i>_ux_nm, _uy_nm, _uz_nm (displacement), p<i>_rx_rad, _ry_rad, _rz_rad
 // (accumulated rotation, integral of omega dt).
 class EnergyCsvWriter {

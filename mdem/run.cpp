@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/output.hpp"
+#include "mdem/tensile.hpp"
 #include "mdem/time_series_plot.hpp"
 
 namespace mesochain::mdem {
@@ -38,12 +39,15 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   std::unique_ptr<TimeSeriesPlot> plot;
   if (!o.plotPng.empty()) plot = std::make_unique<TimeSeriesPlot>(o.probes);
   const long plotEvery = std::max(o.energiesEvery, scene.run.steps / 4000);
+  std::unique_ptr<TensileRecorder> tensile;
+  if (scene.tensile.enabled) tensile = std::make_unique<TensileRecorder>(scene, prepare(scene.tensile.csv));
   const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
   long frame = 0;
   auto record = [&](bool force) {
     const long k = sim.stepCount();
     if (csv && (force || k % o.energiesEvery == 0)) csv->write(k, sim.time(), sim.energies(), sim.bodies());
     if (plot && (force || k % plotEvery == 0)) plot->record(sim.time(), sim.energies(), sim.bodies());
+    if (tensile && (force || k % o.energiesEvery == 0)) tensile->record(sim);
     if (force || k % o.framesEvery == 0) {
       if (xyz) writeXyzFrame(xyz, sim.bodies(), scene.elementTypes, sim.time(), k);
       if (!vtkPrefix.empty())
@@ -55,6 +59,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   RunSummary r;
   r.timeStep = sim.timeStep();
   r.criticalTimeStep = sim.stability().criticalTimeStep;
+  r.dissipatedTracked = sim.effect("contact_damping") != nullptr;
   record(true);
   const long every = std::max(1L, scene.run.steps / 200);
   const bool frames = xyz.is_open() || !vtkPrefix.empty();
@@ -64,7 +69,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     // Advance to the next step that records, checks or reports, in one run (one OpenMP region).
     const long k0 = sim.stepCount();
     long next = scene.run.steps;
-    if (csv) next = std::min(next, nextMultiple(k0, o.energiesEvery));
+    if (csv || tensile) next = std::min(next, nextMultiple(k0, o.energiesEvery));
     if (frames) next = std::min(next, nextMultiple(k0, o.framesEvery));
     if (stopCheck) next = std::min(next, nextMultiple(k0, scene.run.checkEvery));
     if (progress) next = std::min(next, nextMultiple(k0, every));
@@ -84,6 +89,13 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     if (progress && (k % every == 0 || last)) progress(static_cast<double>(k) / scene.run.steps);
   }
   if (plot) plot->write(prepare(o.plotPng));
+  if (tensile) {
+    if (!scene.tensile.png.empty()) tensile->writePlot(prepare(scene.tensile.png));
+    const TensileSample& last = tensile->samples().back();
+    r.tensile = true, r.finalStrain = last.strain, r.finalStress = last.stress;
+    for (const TensileSample& t : tensile->samples()) r.peakStress = std::max(r.peakStress, t.stress);
+    r.initialStress = tensile->samples().front().stress;
+  }
   r.steps = sim.stepCount();
   r.time = sim.time();
   r.finalEnergies = sim.energies();

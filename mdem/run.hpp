@@ -15,6 +15,9 @@ struct RunSummary {
   Energies finalEnergies;
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
+  bool dissipatedTracked = false;  // the scene has contact dashpots
+  bool tensile = false;            // [tensile]: strain and engineering stress (MPa)
+  double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;
 };
 
 // Progress callback receives the fraction of the maximum step count done.

@@ -44,6 +44,24 @@ struct OutputSpec {
   std::string plotPng;                // PNG of the energies and probes against time, "" = none
 };
 
+// [tensile]: uniaxial tensile test with grips (mdem/tensile.hpp, docs/scene-file.md).
+struct TensileSpec {
+  bool enabled = false;
+  int axis = 0;                 // 0 = x, 1 = y
+  double gripWidth = 0.0;       // nm: elements whose centre lies within this of either edge
+  double strainRate = 0.0;      // 1/ns, engineering, of the gauge length
+  double ramp = 0.0;            // ns, grip velocity ramp
+  double crossSection = 0.0;    // nm^2 (0: from the [network] film)
+  double contactGap = 0.5;      // nm, wall gap below which a pair counts as in contact
+  double alignedAngle = 0.0;    // rad, aligned pairs cross below this angle
+  std::string csv = "tensile.csv";
+  std::string png;              // "" = none
+  // Filled by setUpTensile: the grips and the gauge length.
+  std::vector<int> leftGrip, rightGrip;
+  double gaugeLength = 0.0;     // nm
+  double gripSpeed = 0.0;       // nm/ns, each grip (the two move apart at 2 x this)
+};
+
 struct Scene {
   std::string source = "<scene>";     // file name, for messages
   std::vector<ElementType> elementTypes;
@@ -56,8 +74,10 @@ struct Scene {
   Boundary boundary;
   Periodicity periodic;               // used by contacts (positions are never wrapped)
   ContactSpec contacts;               // parameters of vdw_contact / contact_damping
+  Vec3 filmSize = Vec3::Zero();       // nm, the [network] film (zero without a network)
   RunControl run;
   OutputSpec output;
+  TensileSpec tensile;
 };
 
 // Cross-section of a bond whose first element has type t.

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_file.hpp"
+#include "mdem/tensile.hpp"
 #include "mdem/toml_reader.hpp"
 #include "mdem/units.hpp"
 
@@ -270,7 +273,7 @@ Scene loadScene(const std::string& path) {
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
                   "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
-                  "periodic"});
+                  "periodic", "network", "tensile"});
   if (root.integer("format") != 1)
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
@@ -291,6 +294,7 @@ Scene loadScene(const std::string& path) {
   readElements(root, s);
   readFilaments(root, s);
   readBonds(root, s);
+  readNetworkTable(root, s);
   readBoundary(root, s);
   if (root.has("local_damping")) {
     const TomlTable t = root.table("local_damping");
@@ -315,6 +319,27 @@ Scene loadScene(const std::string& path) {
   readRunAndOutput(root, s);
   if (s.bodies.size() == 0)
     throw InputError(path, "keys elements / filaments", "no elements", "at least one element");
+  if (root.has("tensile")) {
+    const TomlTable t = root.table("tensile");
+    t.allowOnly({"axis", "grip_width_nm", "strain_rate_per_ns", "ramp_ns", "cross_section_nm2", "contact_gap_nm",
+                 "aligned_angle_deg", "csv", "plot_png"});
+    TensileSpec& ts = s.tensile;
+    ts.enabled = true;
+    const std::string axis = t.string("axis", "x");
+    if (axis != "x" && axis != "y") t.fail("axis", "\"" + axis + "\"", "\"x\" or \"y\" (in the film plane)");
+    ts.axis = axis == "x" ? 0 : 1;
+    ts.gripWidth = t.positive("grip_width_nm");
+    ts.strainRate = t.positive("strain_rate_per_ns");
+    ts.ramp = t.nonNegative("ramp_ns", 0.0);
+    ts.crossSection = t.has("cross_section_nm2") ? t.positive("cross_section_nm2") : 0.0;
+    ts.contactGap = t.nonNegative("contact_gap_nm", 0.5);
+    ts.alignedAngle = t.number("aligned_angle_deg", 10.0) * units::kPi / 180.0;
+    if (ts.alignedAngle < 0.0 || ts.alignedAngle > 0.5 * units::kPi)
+      t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
+    ts.csv = t.string("csv", "tensile.csv");
+    ts.png = t.string("plot_png", "");
+    setUpTensile(s);
+  }
   return s;
 }
 

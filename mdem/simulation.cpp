@@ -37,6 +37,7 @@ Simulation::Simulation(const Scene& scene)
     effects_.push_back(std::move(b));
   }
   ContactEffects contacts = makeContactEffects(scene);  // only those named
+  const std::vector<ContactStabilityTerms> contactTerms = contactStabilityTerms(scene, contacts);
   if (contacts.vdw) effects_.push_back(std::move(contacts.vdw));
   if (!scene.boundary.loads.empty())
     effects_.push_back(std::make_unique<LoadEffect>(scene.boundary.loads, scene.bodies));
@@ -61,14 +62,14 @@ Simulation::Simulation(const Scene& scene)
   }
 
   limit_ = criticalTimeStep(state_.bodies, bondEffect_ ? bondEffect_->bonds() : std::vector<Bond>{},
-                            kinematics_);
+                            kinematics_, contactTerms);
   if (scene.run.timeStepFraction > 0.0) {
     if (scene.run.timeStepFraction > 1.0)
       throw InputError(scene.source, "key run.time_step_fraction",
                        fmt::format("{}", scene.run.timeStepFraction), "a fraction in (0, 1]");
     h_ = scene.run.timeStepFraction * limit_.criticalTimeStep;
     if (!std::isfinite(h_))
-      throw InputError(scene.source, "key run.time_step_fraction", "a scene without bonds",
+      throw InputError(scene.source, "key run.time_step_fraction", "a scene without bonds or contacts",
                        "run.time_step_ns instead (no critical step to take a fraction of)");
   }
   if (!(h_ > 0.0))
@@ -76,11 +77,11 @@ Simulation::Simulation(const Scene& scene)
                      "a positive time step");
   if (h_ > limit_.criticalTimeStep)
     throw InputError(scene.source, "key run.time_step_ns", fmt::format("{:.6g} ns", h_),
-                     fmt::format("at most the critical time step {:.6g} ns (2/omega_max, "
-                                 "omega_max = {:.6g} rad/ns bounded from the bond stiffness "
-                                 "and the {} of element {})",
-                                 limit_.criticalTimeStep, limit_.omegaMax,
-                                 limit_.rotational ? "moments of inertia" : "mass",
+                     fmt::format("at most the critical time step {:.6g} ns, limited by the {} "
+                                 "(omega = {:.6g} rad/ns, damping rate {:.6g} /ns on the {} "
+                                 "of element {}; docs/scene-file.md, time step)",
+                                 limit_.criticalTimeStep, limit_.limitedBy, limit_.omega,
+                                 limit_.dampingRate, limit_.rotational ? "rotation" : "translation",
                                  limit_.element));
   kinematics_.apply(state_.bodies, 0.0);
   computeForces(true);
@@ -140,6 +141,15 @@ Effect* Simulation::effect(const std::string& name) const {
 const std::vector<Bond>& Simulation::bonds() const {
   static const std::vector<Bond> kNone;
   return bondEffect_ ? bondEffect_->bonds() : kNone;
+}
+
+std::vector<Vec3> Simulation::unconstrainedForces() const {
+  State copy = state_;
+  std::fill(copy.bodies.force.begin(), copy.bodies.force.end(), Vec3::Zero());
+  std::fill(copy.bodies.torque.begin(), copy.bodies.torque.end(), Vec3::Zero());
+  for (const auto& e : effects_)
+    if (e->name() != "local_damping" && e->name() != "viscous_damping") e->addForces(copy);
+  return copy.bodies.force;
 }
 
 std::pair<double, double> Simulation::residual() {

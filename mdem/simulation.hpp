@@ -48,6 +48,11 @@ class Simulation {
   // damping effects: the residual of a static solution.
   std::pair<double, double> residual();
 
+  // Forces of every effect but local / viscous damping on the current state, constrained
+  // components included (the reactions of grips and supports follow from them); the state is
+  // left as it was.
+  std::vector<Vec3> unconstrainedForces() const;
+
  private:
   void computeForces(bool withDamping);
 

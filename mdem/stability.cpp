@@ -17,7 +17,8 @@ bool fullyConstrained(const KinematicMap& k, int i) {
 }  // namespace
 
 StabilityLimit criticalTimeStep(const Bodies& s, const std::vector<Bond>& bonds,
-                                const KinematicMap& kinematics) {
+                                const KinematicMap& kinematics,
+                                const std::vector<ContactStabilityTerms>& contactTerms) {
   const int n = s.size();
   std::vector<double> rowSum(6 * static_cast<std::size_t>(n), 0.0);
   std::vector<char> active(n);
@@ -44,18 +45,47 @@ StabilityLimit criticalTimeStep(const Bodies& s, const std::vector<Bond>& bonds,
       }
     }
   }
+  // Contact rows: stiffness (omega^2) and damping rate per DOF.
+  std::vector<double> contactRow(rowSum.size(), 0.0), rate(rowSum.size(), 0.0);
+  if (!contactTerms.empty()) {
+    for (int i = 0; i < n; ++i) {
+      if (!active[i]) continue;
+      const ContactStabilityTerms& c = contactTerms[s.type[i]];
+      for (int d = 0; d < 6; ++d) {
+        const double k = d < 3 ? c.stiffness : c.rotationalStiffness[d - 3];
+        const double g = d < 3 ? c.damping : c.rotationalDamping[d - 3];
+        contactRow[6 * i + d] = k / massOf(i, d);
+        rate[6 * i + d] = g / massOf(i, d);
+      }
+    }
+  }
   StabilityLimit lim;
+  lim.criticalTimeStep = std::numeric_limits<double>::infinity();
   double best = 0.0;
   for (std::size_t r = 0; r < rowSum.size(); ++r) {
-    if (rowSum[r] > best) {
-      best = rowSum[r];
+    const double w2 = rowSum[r] + contactRow[r], beta = rate[r];
+    best = std::max(best, w2);
+    double h = std::numeric_limits<double>::infinity();
+    if (w2 > 0.0) {
+      const double w = std::sqrt(w2), zeta = beta / (2.0 * w);
+      h = 2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta);
+    } else if (beta > 0.0) {
+      h = 2.0 / beta;
+    }
+    if (h < lim.criticalTimeStep) {
+      lim.criticalTimeStep = h;
       lim.element = static_cast<int>(r / 6);
       lim.rotational = (r % 6) >= 3;
+      lim.omega = std::sqrt(w2);
+      lim.dampingRate = beta;
+      // The term that alone would give the shortest step names the limit.
+      const double hb = rowSum[r] > 0.0 ? 2.0 / std::sqrt(rowSum[r]) : HUGE_VAL;
+      const double hv = contactRow[r] > 0.0 ? 2.0 / std::sqrt(contactRow[r]) : HUGE_VAL;
+      const double hd = beta > 0.0 ? 2.0 / beta : HUGE_VAL;
+      lim.limitedBy = hd < hb && hd < hv ? "contact dashpots" : hv < hb ? "van der Waals contacts" : "bonds";
     }
   }
   lim.omegaMax = std::sqrt(best);
-  lim.criticalTimeStep =
-      best > 0.0 ? 2.0 / lim.omegaMax : std::numeric_limits<double>::infinity();
   return lim;
 }
 

@@ -10,6 +10,16 @@
 // DOFs of elements that are completely constrained (all six fixed, or prescribed) are left
 // out. The returned step is therefore never above the true stability limit; for a uniform
 // chain it is within a factor of about 2 of it.
+//
+// Contacts (vdW springs and dashpots) come in as per-element-type terms (ContactStabilityTerms,
+// built by the contact effects): a stiffness added to the Gershgorin row of each DOF, and a
+// damping rate beta (1/ns) per DOF. For a damped oscillator x'' = -omega^2 x - beta x' the
+// explicit central-difference / Verlet scheme is stable for
+//   h <= (2 / omega) (sqrt(1 + zeta^2) - zeta),  zeta = beta / (2 omega)
+// (-> 2 / beta without stiffness); the bound is taken per DOF with that DOF's omega and beta.
+// Contacts change during a run, so their terms are an estimate for a crowded state (see
+// contact_effects.hpp), not a bound on the initial state alone.
+#include <string>
 #include <vector>
 
 #include "mdem/boundary.hpp"
@@ -17,14 +27,33 @@
 
 namespace mesochain::mdem {
 
-struct StabilityLimit {
-  double criticalTimeStep = 0.0;  // ns, 2 / omega_max (infinite without bonds)
-  double omegaMax = 0.0;          // rad/ns, the Gershgorin bound
-  int element = -1;               // element whose row gives the bound
-  bool rotational = false;        // whether that row is a rotational DOF
+// Contact terms of one element type: what a crowded element feels from its contacts.
+struct ContactStabilityTerms {
+  double stiffness = 0.0;                  // pN/nm, Gershgorin row term of each translation
+  Vec3 rotationalStiffness = Vec3::Zero(); // pN nm/rad, about the body axes
+  double damping = 0.0;                    // pN ns/nm, dashpot row term of each translation
+  Vec3 rotationalDamping = Vec3::Zero();   // pN nm ns, about the body axes
+  ContactStabilityTerms& operator+=(const ContactStabilityTerms& o) {
+    stiffness += o.stiffness, rotationalStiffness += o.rotationalStiffness;
+    damping += o.damping, rotationalDamping += o.rotationalDamping;
+    return *this;
+  }
 };
 
+struct StabilityLimit {
+  double criticalTimeStep = 0.0;  // ns (infinite without bonds or contacts)
+  double omegaMax = 0.0;          // rad/ns, the Gershgorin bound (bonds + contact stiffness)
+  int element = -1;               // element whose DOF gives the step
+  bool rotational = false;        // whether that DOF is rotational
+  // What limits that DOF most: "bonds", "van der Waals contacts" or "contact dashpots".
+  std::string limitedBy = "bonds";
+  double omega = 0.0;             // rad/ns, of the limiting DOF
+  double dampingRate = 0.0;       // 1/ns, beta of the limiting DOF
+};
+
+// `contactTerms` (may be empty): one entry per element type.
 StabilityLimit criticalTimeStep(const Bodies& bodies, const std::vector<Bond>& bonds,
-                                const KinematicMap& kinematics);
+                                const KinematicMap& kinematics,
+                                const std::vector<ContactStabilityTerms>& contactTerms = {});
 
 }  // namespace mesochain::mdem

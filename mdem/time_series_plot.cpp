@@ -10,8 +10,9 @@ namespace mesochain::mdem {
 
 namespace {
 constexpr const char* kEnergyNames[] = {"kinetic translational", "kinetic rotational", "stretching",
-                                        "shearing", "twisting", "bending", "load potential", "total"};
-constexpr int kEnergyKinds = 8;
+                                        "shearing", "twisting", "bending", "load potential",
+                                        "van der Waals", "dissipated by dashpots", "total"};
+constexpr int kEnergyKinds = 10;
 constexpr const char* kProbeNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
 }  // namespace
 
@@ -23,7 +24,7 @@ void TimeSeriesPlot::record(double time, const Energies& e, const Bodies& b) {
   time_.push_back(time);
   const double values[kEnergyKinds] = {e.kineticTranslational, e.kineticRotational, e.bonds.stretching,
                                        e.bonds.shearing, e.bonds.twisting, e.bonds.bending,
-                                       e.loadPotential, e.total()};
+                                       e.loadPotential, e.vdw, e.contactDissipated, e.total()};
   for (int k = 0; k < kEnergyKinds; ++k) energies_[k].push_back(values[k]);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const int i = probes_[p];
@@ -51,7 +52,7 @@ void TimeSeriesPlot::write(const std::string& path) const {
     }
     plot::SeriesStyle style;
     style.color = plot::paletteColor(k);
-    style.dashed = k == kEnergyKinds - 1;  // the total
+    style.dashed = k >= kEnergyKinds - 2;  // the dissipated work and the total
     energies.add(kEnergyNames[k], time_, energies_[k], style);
   }
   energies.title = zero.empty() ? "Energies" : fmt::format("Energies (zero throughout: {})", fmt::join(zero, ", "));

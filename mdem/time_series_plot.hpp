@@ -1,6 +1,7 @@
 #pragma once
 // PNG plots of a run's time series ([output] plot_png): the energies (kinetic translational and
-// rotational, each bond energy kind, load potential, total; zJ) and, when probes are given,
+// rotational, each bond energy kind, load potential, van der Waals, work dissipated by the contact
+// dashpots, total; zJ) and, when probes are given,
 // their displacements (nm) and accumulated rotations (rad), one panel each, against time (ns).
 #include <string>
 #include <vector>

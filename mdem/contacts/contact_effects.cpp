@@ -162,14 +162,26 @@ void ContactDampingEffect::addForces(State& state) {
   const auto& pairs = nb_->list().pairs();
   const int np = static_cast<int>(pairs.size());
   results_.resize(np);
-#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
+  double power = 0.0;  // dissipated, >= 0
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : power) if (np > 256)
   for (int p = 0; p < np; ++p) {
     const int i = pairs[p].first, j = pairs[p].second;
     const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
-    results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]), s.velocity[i],
-                                 s.angularVelocityWorld(i), s.velocity[j], s.angularVelocityWorld(j));
+    const Vec3 wi = s.angularVelocityWorld(i), wj = s.angularVelocityWorld(j);
+    const ContactPairResult& r = results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]),
+                                                               nb_->radius(s.type[j]), s.velocity[i], wi,
+                                                               s.velocity[j], wj);
+    power -= r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj);
   }
   gather(nb_->list(), results_, s);
+  dissipated_ += power * (state.time - lastTime_);
+  lastTime_ = state.time;
+}
+
+Energies ContactDampingEffect::energy(const State&) const {
+  Energies e;
+  e.contactDissipated = dissipated_;
+  return e;
 }
 
 ContactEffects makeContactEffects(const Scene& scene) {
@@ -184,6 +196,44 @@ ContactEffects makeContactEffects(const Scene& scene) {
   if (vdw) c.vdw = std::make_unique<VdwContactEffect>(scene, c.neighbourhood);
   if (damping) c.damping = std::make_unique<ContactDampingEffect>(scene, c.neighbourhood);
   return c;
+}
+
+std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, const ContactEffects& effects) {
+  const int nt = static_cast<int>(scene.elementTypes.size());
+  std::vector<ContactStabilityTerms> terms(nt);
+  if (!effects.vdw && !effects.damping) return terms;
+  std::vector<char> used(nt, 0);
+  for (int t : scene.bodies.type) used[t] = 1;
+  const double n = kContactCoordination, rMax = maxRadius(scene);
+  for (int a = 0; a < nt; ++a) {
+    if (!used[a]) continue;
+    const ElementType& ta = scene.elementTypes[a];
+    const double l = ta.length, r = effectiveRadius(ta);
+    ContactStabilityTerms& c = terms[a];
+    if (effects.vdw) {
+      double curvature = 0.0;  // largest Phi'' at the minimum over the partner types
+      for (int b = 0; b < nt; ++b) {
+        if (!used[b]) continue;
+        const TubePairPotential& p = effects.vdw->potential(a, b);
+        const double d = p.equilibriumDistance(), delta = 1e-3;
+        double up, down;
+        p.phi(d + delta, &up), p.phi(d - delta, &down);
+        curvature = std::max(curvature, (up - down) / (2.0 * delta));
+      }
+      c.stiffness = 2.0 * n * curvature * l;
+      c.rotationalStiffness = Vec3(1.0, 1.0, 0.0) * (2.0 * n * curvature * l * l * l / 12.0);
+    }
+    if (effects.damping) {
+      const ContactDampingSpec& d = scene.contacts.damping;
+      const double lambda = l + r + rMax, rc = r + 0.5 * d.fullGap;
+      const double rn2 = 0.25 * l * l + rc * rc;
+      c.damping = 2.0 * n * d.translational * lambda;
+      const double normal = 2.0 * n * (d.translational * lambda * rn2 + d.rotational * lambda);
+      const double axial = 2.0 * n * (d.translational * lambda * rc * rc + d.rotational * lambda);
+      c.rotationalDamping = Vec3(normal, normal, axial);
+    }
+  }
+  return terms;
 }
 
 ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle) {

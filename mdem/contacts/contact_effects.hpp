@@ -15,6 +15,7 @@
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/effect.hpp"
 #include "mdem/scene.hpp"
+#include "mdem/stability.hpp"
 
 namespace mesochain::mdem {
 
@@ -57,6 +58,7 @@ class VdwContactEffect : public Effect {
   const TubePairPotential& potential(int typeA, int typeB) const;
   double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
   double neighbourSeconds() const { return nb_->seconds; }
+  const ContactNeighbourhood& neighbourhood() const { return *nb_; }
   long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
 
  private:
@@ -78,10 +80,14 @@ class ContactDampingEffect : public Effect {
   ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
   std::string name() const override { return "contact_damping"; }
   void addForces(State& state) override;
-  Energies energy(const State&) const override { return {}; }
+  // Stores nothing; reports the dissipated work in Energies::contactDissipated.
+  Energies energy(const State&) const override;
   static double interactionRange(const Scene& scene);
 
  private:
+  // Work: each force evaluation at time t charges its power (sum over pairs of
+  // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one.
+  double dissipated_ = 0.0, lastTime_ = 0.0;
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;
   std::vector<ContactPairResult> results_;
@@ -94,6 +100,22 @@ struct ContactEffects {
   std::shared_ptr<ContactNeighbourhood> neighbourhood;
 };
 ContactEffects makeContactEffects(const Scene& scene);
+
+// Contact terms of the critical time step (stability.hpp), per element type. Contacts change
+// during a run, so each element is taken as crowded: in contact along its whole length with
+// kContactCoordination neighbouring tubes (a close-packed bundle), each contact counted twice
+// (Gershgorin: the element's own row and its coupling to the neighbour).
+//  * vdW: the curvature Phi'' of the tube-tube potential at its minimum (the stiffest point of
+//    the well), per unit length: stiffness 2 n Phi'' L, and about the axes normal to the element
+//    2 n Phi'' L^3 / 12 (the contact resists tilting); none about the element's axis.
+//  * dashpots: contact length lambda = L + R + R_max (aligned overlap plus the crossing term,
+//    an upper bound), lever arm r of the contact point from the centre (sqrt((L/2)^2 + R_c^2)
+//    about the normal axes, R_c = R + full_gap/2 about the element's axis): translational
+//    2 n gamma lambda, rotational 2 n (gamma lambda r^2 + gamma_r lambda).
+// Measured (docs/mdem-contacts.md): two crossed tubes at h = 2e-5 ns blow up for gamma between 5
+// and 10 pN ns/nm^2; this estimate admits gamma up to about 2.7 there.
+inline constexpr int kContactCoordination = 6;
+std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, const ContactEffects& effects);
 
 // Pairs in van der Waals contact (wall gap of the closest points below maxGap) whose axes make
 // an angle below maxAngle (either direction): the "aligned pairs" of the tensile analysis.

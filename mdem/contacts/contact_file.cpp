@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/contacts/network_generator.hpp"
 #include "mdem/units.hpp"
 
 namespace mesochain::mdem {
@@ -44,6 +45,59 @@ void validateContactSpec(const Scene& s) {
   requireRange(s, "contacts.skin_nm", c.skin, 1e-3, 10.0, "nm");
   for (int k = 0; k < 3; ++k)
     if (s.periodic.periodic[k]) requireRange(s, "periodic.length_nm", s.periodic.length[k], 1e-3, 1e9, "nm");
+}
+
+void readNetworkTable(const TomlTable& root, Scene& s) {
+  if (!root.has("network")) return;
+  const TomlTable t = root.table("network");
+  t.allowOnly({"element_type", "bond_type", "size_nm", "tubes", "areal_density_ug_per_cm2", "tube_length_nm",
+               "shape", "waviness_deg", "minimum_gap_nm", "seed"});
+  auto typeIndex = [&](const auto& types, const char* key) {
+    const std::string name = t.string(key);
+    for (std::size_t i = 0; i < types.size(); ++i)
+      if (types[i].name == name) return static_cast<int>(i);
+    t.fail(key, "\"" + name + "\"", "the name of a defined type");
+  };
+  NetworkSpec n;
+  n.elementType = typeIndex(s.elementTypes, "element_type");
+  n.bondType = typeIndex(s.bondTypes, "bond_type");
+  const ElementType& e = s.elementTypes[n.elementType];
+  n.size = t.vec3("size_nm");
+  if (n.size.x() <= 0.0 || n.size.y() <= 0.0 || n.size.z() < 0.0)
+    t.fail("size_nm", fmt::format("[{}, {}, {}]", n.size.x(), n.size.y(), n.size.z()),
+           "positive film extents along x and y and a thickness >= 0 (nm)");
+  const double tubeLength = t.positive("tube_length_nm");
+  n.elementsPerTube = static_cast<int>(std::lround(tubeLength / e.length));
+  if (n.elementsPerTube < 1 || std::abs(n.elementsPerTube * e.length - tubeLength) > 1e-6 * tubeLength)
+    t.fail("tube_length_nm", fmt::format("{:.6g} nm", tubeLength),
+           fmt::format("a whole number of elements of \"{}\" (length {:.6g} nm)", e.name, e.length));
+  if (t.has("tubes") == t.has("areal_density_ug_per_cm2"))
+    t.fail("tubes", t.has("tubes") ? "both tubes and areal_density_ug_per_cm2" : "neither",
+           "exactly one of tubes, areal_density_ug_per_cm2");
+  if (t.has("tubes")) {
+    const long k = t.integer("tubes");
+    if (k < 1 || k > 10000000) t.fail("tubes", std::to_string(k), "a number of tubes in [1, 1e7]");
+    n.tubes = static_cast<int>(k);
+  } else {
+    // 1 ug/cm^2 = 1e-5 kg/m^2 = 1e-2 ag/nm^2.
+    const double areal = t.positive("areal_density_ug_per_cm2") * 1e-2;
+    n.tubes = static_cast<int>(std::lround(areal * n.size.x() * n.size.y() / (n.elementsPerTube * e.mass)));
+    if (n.tubes < 1)
+      t.fail("areal_density_ug_per_cm2", fmt::format("{:.6g}", t.number("areal_density_ug_per_cm2")),
+             "a density giving at least one tube in the film");
+  }
+  const std::string shape = t.string("shape", "straight");
+  if (shape != "straight" && shape != "wavy") t.fail("shape", "\"" + shape + "\"", "\"straight\" or \"wavy\"");
+  if (shape == "straight" && t.has("waviness_deg")) t.fail("waviness_deg", "a waviness for straight tubes", "shape = \"wavy\"");
+  n.waviness = shape == "wavy" ? t.number("waviness_deg", 15.0) * units::kPi / 180.0 : 0.0;
+  if (n.waviness < 0.0 || n.waviness > units::kPi / 2)
+    t.fail("waviness_deg", fmt::format("{}", t.number("waviness_deg")), "an angle per element in [0, 90] degrees");
+  n.minimumGap = t.nonNegative("minimum_gap_nm", n.minimumGap);
+  const long seed = t.integer("seed", 1);
+  if (seed < 0) t.fail("seed", std::to_string(seed), "a seed >= 0");
+  n.seed = static_cast<std::uint64_t>(seed);
+  generateNetwork(s, n);
+  s.filmSize = n.size;
 }
 
 void readContactTables(const TomlTable& root, Scene& s) {

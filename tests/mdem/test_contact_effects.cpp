@@ -195,8 +195,10 @@ TEST(MdemContactEffects, DampedCrossedTubesAlign) {
   s.contacts.damping.translational = 2.0;
   s.contacts.damping.rotational = 0.2;
   s.localDampingAlpha = 0.3;
+  s.run.timeStepFraction = 0.0;  // the critical step with dashpots is ~2.9e-5 ns
+  s.run.timeStep = 2e-5;
   Simulation sim(s);
-  sim.run(5000);
+  sim.run(5400);
   const double angle = crossingAngle(sim.bodies(), 8);
   const Energies e = sim.energies();
   std::printf("damped zipping from 30 deg: final angle %.4f rad, vdW %.3f zJ, kinetic %.3g zJ\n", angle, e.vdw,
@@ -214,9 +216,9 @@ TEST(MdemContactEffects, RotatedSceneGivesTheSameResult) {
     s.contacts.damping.translational = 2.0;
     s.contacts.damping.rotational = 0.2;
     s.run.timeStepFraction = 0.0;  // the critical-step bound (Gershgorin, world frame) is not
-    s.run.timeStep = 3e-5;         // frame independent; take one fixed step
+    s.run.timeStep = 2e-5;         // frame independent; take one fixed step
     Simulation sim(s);
-    sim.run(1500);
+    sim.run(2250);
     angles.push_back(crossingAngle(sim.bodies(), 8));
     const Energies e = sim.energies();
     vdw.push_back(e.vdw), kinetic.push_back(e.kineticTranslational + e.kineticRotational);

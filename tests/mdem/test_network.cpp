@@ -5,6 +5,10 @@
 #include "common/errors.hpp"
 #include "contact_fixture.hpp"
 #include "mdem/contacts/network_generator.hpp"
+#include "mdem/scene_file.hpp"
+
+#include <filesystem>
+#include <fstream>
 
 namespace mesochain::mdem {
 namespace {
@@ -69,6 +73,63 @@ TEST(MdemNetwork, OverlappingTubesAreAClearError) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("overlapping"), std::string::npos) << e.what();
   }
+}
+
+std::string writeNetworkScene(const std::string& name, const std::string& networkKeys) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("mdem-network-" + name + ".toml")).string();
+  std::ofstream(path) << R"(format = 1
+effects = ["bonds"]
+[[element_types]]
+name = "cnt1010"
+shape = "cylinder"
+radius_nm = 0.678
+length_nm = 2.0
+mass_ag = 0.0064823
+[[bond_types]]
+name = "cnt"
+young_modulus_MPa = 1.0e6
+shear_modulus_MPa = 0.4e6
+[network]
+element_type = "cnt1010"
+bond_type = "cnt"
+size_nm = [60.0, 60.0, 4.0]
+tube_length_nm = 12.0
+)" + networkKeys + R"(
+[run]
+time_step_fraction = 0.5
+steps = 1
+)";
+  return path;
+}
+
+TEST(MdemNetwork, SceneTableGeneratesTheSameNetwork) {
+  const Scene fromFile = loadScene(writeNetworkScene("same", "tubes = 25\nshape = \"wavy\"\nwaviness_deg = 8.594366926962348\nseed = 42"));
+  Scene direct = tubeScene({"bonds"});
+  direct.elementTypes[0].mass = 0.0064823;
+  generateNetwork(direct, film(42, 8.594366926962348 * units::kPi / 180.0));
+  ASSERT_EQ(fromFile.bodies.size(), direct.bodies.size());
+  for (int i = 0; i < direct.bodies.size(); ++i) EXPECT_EQ(fromFile.bodies.position[i], direct.bodies.position[i]);
+  EXPECT_EQ(fromFile.filmSize, Vec3(60.0, 60.0, 4.0));
+  // Areal density 0.02 ug/cm^2 = 2e-4 ag/nm^2, over 3600 nm^2: 0.72 ag = 18.5 tubes of
+  // 6 x 0.0064823 ag -> 19 tubes.
+  const Scene dense = loadScene(writeNetworkScene("areal", "areal_density_ug_per_cm2 = 0.02"));
+  EXPECT_EQ(dense.bodies.size(), 19 * 6);
+}
+
+TEST(MdemNetwork, BadNetworkKeysAreClearErrors) {
+  auto expectError = [](const std::string& keys, const char* key) {
+    try {
+      loadScene(writeNetworkScene("bad", keys));
+      ADD_FAILURE() << "no error for " << keys;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  expectError("", "tubes");                                  // neither count nor density
+  expectError("tubes = 3\nareal_density_ug_per_cm2 = 0.1", "tubes");
+  expectError("tubes = 3\nwaviness_deg = 5", "waviness_deg");  // straight tubes
+  expectError("tubes = 3\nshape = \"curly\"", "shape");
+  expectError("tubes = 3000", "network.tubes");              // cannot be packed
 }
 
 }  // namespace

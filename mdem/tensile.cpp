@@ -1,0 +1,164 @@
+#include "mdem/tensile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/plot/canvas.hpp"
+#include "common/plot/figure.hpp"
+#include "common/plot/png_io.hpp"
+#include "mdem/contacts/contact_effects.hpp"
+#include "mdem/contacts/neighbour_list.hpp"
+#include "mdem/integrator.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
+
+double meanAxial(const Bodies& b, const std::vector<int>& grip, int axis, bool initial) {
+  double s = 0.0;
+  for (int i : grip) s += (initial ? b.initialPosition[i] : b.position[i])[axis];
+  return s / grip.size();
+}
+
+// Grip velocity factor and acceleration of the ramp at time t.
+double rampAcceleration(double t, double ramp, double speed) { return ramp > 0.0 && t < ramp ? speed / ramp : 0.0; }
+double rampVelocity(double t, double ramp, double speed) { return ramp > 0.0 ? speed * std::min(1.0, t / ramp) : speed; }
+}  // namespace
+
+void setUpTensile(Scene& s) {
+  TensileSpec& t = s.tensile;
+  if (!t.enabled) return;
+  const Bodies& b = s.bodies;
+  const int a = t.axis;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec3& x : b.position) lo = std::min(lo, x[a]), hi = std::max(hi, x[a]);
+  t.leftGrip.clear(), t.rightGrip.clear();
+  double leftInner = -std::numeric_limits<double>::infinity(), rightInner = -leftInner;
+  for (int i = 0; i < b.size(); ++i) {
+    const double x = b.position[i][a];
+    if (x <= lo + t.gripWidth) t.leftGrip.push_back(i), leftInner = std::max(leftInner, x);
+    else if (x >= hi - t.gripWidth) t.rightGrip.push_back(i), rightInner = std::min(rightInner, x);
+  }
+  t.gaugeLength = rightInner - leftInner;
+  if (t.rightGrip.empty() || !(t.gaugeLength > 0.0))
+    throw InputError(s.source, "key tensile.grip_width_nm", fmt::format("{:.6g} nm on a specimen of {:.6g} nm", t.gripWidth, hi - lo),
+                     "grips narrower than half the specimen, leaving free elements between them");
+  for (const FixedDofs& f : s.boundary.fixed)
+    if (std::count(t.leftGrip.begin(), t.leftGrip.end(), f.element) || std::count(t.rightGrip.begin(), t.rightGrip.end(), f.element))
+      throw InputError(s.source, "key tensile.grip_width_nm", fmt::format("element {} in a grip and in [[fixed]]", f.element),
+                       "grip elements without other constraints");
+  for (const Prescribed& p : s.boundary.prescribed)
+    if (std::count(t.leftGrip.begin(), t.leftGrip.end(), p.element) || std::count(t.rightGrip.begin(), t.rightGrip.end(), p.element))
+      throw InputError(s.source, "key tensile.grip_width_nm", fmt::format("element {} in a grip and in [[prescribed]]", p.element),
+                       "grip elements without other constraints");
+  if (!(t.crossSection > 0.0)) {
+    if (s.filmSize.isZero())
+      throw InputError(s.source, "key tensile.cross_section_nm2", "nothing (and no [network] film)",
+                       "the specimen's cross-section in nm^2");
+    double r = 0.0;
+    for (const ElementType& e : s.elementTypes) r = std::max(r, effectiveRadius(e));
+    t.crossSection = s.filmSize[1 - a] * (s.filmSize.z() + 2.0 * r);
+  }
+  t.gripSpeed = 0.5 * t.strainRate * t.gaugeLength;
+  for (int side = 0; side < 2; ++side)
+    for (int i : side == 0 ? t.leftGrip : t.rightGrip) {
+      FixedDofs f;
+      f.element = i;
+      f.fixed[a] = true;
+      f.velocity[a] = side == 0 ? -t.gripSpeed : t.gripSpeed;
+      f.ramp = t.ramp;
+      s.boundary.fixed.push_back(f);
+    }
+}
+
+TensileRecorder::TensileRecorder(const Scene& scene, const std::string& csvPath) : scene_(scene), area_(scene.tensile.crossSection) {
+  if (csvPath.empty()) return;
+  csv_.open(csvPath);
+  if (!csv_) throw InputError(csvPath, "", "a file that cannot be written", "a writable path (tensile.csv)");
+  csv_ << "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ,stretching_zJ,shearing_zJ,"
+          "twisting_zJ,bending_zJ,vdw_zJ,kinetic_translational_zJ,kinetic_rotational_zJ,total_zJ,"
+          "contact_dissipated_zJ,contact_pairs,aligned_pairs\n";
+}
+
+const TensileSample& TensileRecorder::record(const Simulation& sim) {
+  const TensileSpec& t = scene_.tensile;
+  const Bodies& b = sim.bodies();
+  const int a = t.axis;
+  TensileSample s;
+  s.time = sim.time();
+  const double du = (meanAxial(b, t.rightGrip, a, false) - meanAxial(b, t.rightGrip, a, true)) -
+                    (meanAxial(b, t.leftGrip, a, false) - meanAxial(b, t.leftGrip, a, true));
+  s.strain = du / t.gaugeLength;
+  const std::vector<Vec3> f = sim.unconstrainedForces();
+  const double acc = rampAcceleration(s.time, t.ramp, t.gripSpeed), vel = rampVelocity(s.time, t.ramp, t.gripSpeed);
+  double power = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    const double sign = side == 0 ? -1.0 : 1.0;
+    double sum = 0.0;
+    for (int i : side == 0 ? t.leftGrip : t.rightGrip) {
+      sum += f[i][a];
+      power += (b.mass[i] * sign * acc - f[i][a]) * sign * vel;  // reaction times grip velocity
+    }
+    (side == 0 ? s.forceLeft : s.forceRight) = sum;
+  }
+  s.stress = 0.5 * (s.forceLeft - s.forceRight) / area_;
+  s.energies = sim.energies();
+  if (!samples_.empty()) s.gripWork = samples_.back().gripWork + 0.5 * (lastPower_ + power) * (s.time - samples_.back().time);
+  lastPower_ = power;
+  if (const auto* v = dynamic_cast<const VdwContactEffect*>(sim.effect("vdw_contact"))) {
+    const ContactCount c = countContacts(v->neighbourhood(), b, t.contactGap, t.alignedAngle);
+    s.contacts = c.inContact, s.aligned = c.aligned;
+  }
+  samples_.push_back(s);
+  if (csv_.is_open()) {
+    const Energies& e = s.energies;
+    csv_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{}\n",
+                        s.time, s.strain, s.stress, s.forceLeft, s.forceRight, s.gripWork, e.bonds.stretching,
+                        e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.vdw, e.kineticTranslational,
+                        e.kineticRotational, e.total(), e.contactDissipated, s.contacts, s.aligned);
+    csv_.flush();
+  }
+  return samples_.back();
+}
+
+void TensileRecorder::writePlot(const std::string& path) const {
+  std::vector<double> strain, stress, contacts, aligned;
+  std::vector<std::vector<double>> energy(8);
+  const char* names[8] = {"stretching", "shearing", "twisting", "bending", "van der Waals", "kinetic", "grip work", "total - initial"};
+  for (const TensileSample& s : samples_) {
+    strain.push_back(s.strain), stress.push_back(s.stress);
+    contacts.push_back(s.contacts), aligned.push_back(s.aligned);
+    const Energies& e = s.energies;
+    const double v[8] = {e.bonds.stretching, e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.vdw,
+                         e.kineticTranslational + e.kineticRotational, s.gripWork,
+                         e.total() - samples_.front().energies.total()};
+    for (int k = 0; k < 8; ++k) energy[k].push_back(v[k]);
+  }
+  const int width = 900, height = 420;
+  plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts against strain");
+  fs.x.label = fe.x.label = fc.x.label = "strain";
+  fs.y.label = "stress (MPa)";
+  fe.y.label = "energy (zJ)";
+  fc.y.label = "pairs";
+  fs.add(fmt::format("stress (A = {:.4g} nm^2)", area_), strain, stress);
+  for (int k = 0; k < 8; ++k) {
+    plot::SeriesStyle style;
+    style.color = plot::paletteColor(k);
+    style.dashed = k >= 6;
+    fe.add(names[k], strain, energy[k], style);
+  }
+  fc.add("in contact", strain, contacts);
+  plot::SeriesStyle st;
+  st.color = plot::paletteColor(1);
+  fc.add(fmt::format("aligned (< {:.0f} deg)", scene_.tensile.alignedAngle * 180.0 / 3.14159265358979), strain, aligned, st);
+  plot::Image image = plot::aboveEachOther(fs.render(width, height, path), fe.render(width, height, path));
+  image = plot::aboveEachOther(image, fc.render(width, height, path));
+  plot::writePng(path, image);
+}
+
+}  // namespace mesochain::mdem

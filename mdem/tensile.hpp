@@ -1,0 +1,64 @@
+#pragma once
+// Uniaxial tensile test with grips ([tensile] in a scene; docs/scene-file.md).
+//
+// Grips: the elements whose centre lies within `grip_width_nm` of either edge of the specimen
+// along the axis (the smallest and largest centre coordinates). Their axial translation is
+// prescribed (FixedDofs with a velocity): the two grips move apart, each at
+// v = strain_rate * L0 / 2, reached over a linear velocity ramp; the transverse translations and
+// all rotations stay free. L0, the gauge length, is the free length between the grips: the
+// smallest axial centre coordinate of the right grip minus the largest of the left grip.
+//
+// Per sample (every output.energies_every steps):
+//   strain  (u_right - u_left) / L0, u the axial displacement of the grips;
+//   stress  engineering, (F_left - F_right) / (2 A): F the axial sum of the forces the specimen
+//           exerts on a grip's elements (unconstrained, without numerical damping), A the
+//           cross-section: cross_section_nm2, or the [network] film's width normal to the axis
+//           times (film thickness + 2 R_max), the outer extent of the tubes' walls;
+//   energies by kind (stretching, shearing, twisting, bending, van der Waals, kinetic), the
+//           work of the grips W = \int sum_i R_i v_i dt (R_i = m_i a(t) - F_i the reaction on
+//           grip element i; trapezoid rule between samples) and the work of the dashpots;
+//   contacts: pairs with a wall gap below contact_gap_nm, and those crossing below
+//           aligned_angle_deg (the aligned pairs).
+// Energy balance: total(t) - total(0) = W - dissipated (dashpots; local damping not tracked).
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mdem/scene.hpp"
+#include "mdem/simulation.hpp"
+
+namespace mesochain::mdem {
+
+// Selects the grips, sets their kinematics (scene.boundary.fixed) and the gauge length. Throws
+// InputError (naming the [tensile] keys) for empty or overlapping grips, elements already
+// constrained, or no cross-section.
+void setUpTensile(Scene& scene);
+
+struct TensileSample {
+  double time = 0.0, strain = 0.0, stress = 0.0;  // ns, -, MPa
+  double forceLeft = 0.0, forceRight = 0.0;       // pN, specimen on the grips (axial)
+  double gripWork = 0.0;                          // zJ
+  Energies energies;
+  int contacts = 0, aligned = 0;
+};
+
+class TensileRecorder {
+ public:
+  // Opens the CSV (path) when not empty.
+  TensileRecorder(const Scene& scene, const std::string& csvPath);
+  // Samples the current state of `sim` (call at increasing times).
+  const TensileSample& record(const Simulation& sim);
+  const std::vector<TensileSample>& samples() const { return samples_; }
+  // PNG: stress-strain, energies against strain, contact and aligned pair counts.
+  void writePlot(const std::string& path) const;
+
+ private:
+  const Scene& scene_;
+  double area_ = 0.0;
+  std::ofstream csv_;
+  std::vector<TensileSample> samples_;
+  double lastPower_ = 0.0;
+};
+
+}  // namespace mesochain::mdem

@@ -1,0 +1,97 @@
+// Tensile test with grips (mdem/tensile.hpp) on a single straight tube between the grips: the
+// grips follow the prescribed ramp profile; the unstressed tube has zero stress at zero strain;
+// the stress-strain slope is Y A_tube / A_film (closed form for bonds in series over the gauge
+// length); the grips' work equals the change of the total energy (energy decomposition closes).
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "contact_fixture.hpp"
+#include "mdem/tensile.hpp"
+
+namespace mesochain::mdem {
+namespace {
+
+using namespace testing;
+
+constexpr double kFilm = 100.0;  // nm^2, the cross-section given
+
+Scene tubeBetweenGrips(std::vector<std::string> effects, double ramp) {
+  Scene s = tubeScene(std::move(effects));
+  addTube(s, 12, Vec3::Zero(), Vec3::UnitX());  // centres 0, 2, ..., 22 nm
+  s.tensile.enabled = true;
+  s.tensile.gripWidth = 3.0;  // two elements per grip
+  s.tensile.strainRate = 1.0;
+  s.tensile.ramp = ramp;
+  s.tensile.crossSection = kFilm;
+  setUpTensile(s);
+  s.run.timeStepFraction = 0.5;
+  return s;
+}
+
+TEST(MdemTensile, GripsFollowTheRampProfile) {
+  Scene s = tubeBetweenGrips({"bonds"}, 0.004);
+  ASSERT_EQ(s.tensile.leftGrip.size(), 2u);
+  ASSERT_EQ(s.tensile.rightGrip.size(), 2u);
+  EXPECT_NEAR(s.tensile.gaugeLength, 18.0, 1e-12);  // from the centre at 2 nm to the one at 20 nm
+  const double v = s.tensile.gripSpeed, ramp = s.tensile.ramp;
+  EXPECT_NEAR(v, 9.0, 1e-12);  // each grip: strain rate x L0 / 2
+  Simulation sim(s);
+  double worst = 0.0;
+  while (sim.time() < 3.0 * ramp) {
+    sim.run(5);
+    const double t = sim.time();
+    const double expected = t <= ramp ? v * t * t / (2.0 * ramp) : v * (t - 0.5 * ramp);
+    for (int i : {10, 11}) worst = std::max(worst, std::abs(sim.bodies().position[i].x() - s.bodies.position[i].x() - expected));
+    for (int i : {0, 1}) worst = std::max(worst, std::abs(s.bodies.position[i].x() - sim.bodies().position[i].x() - expected));
+  }
+  // The velocity is set at the half steps: the displacement error is O(v h^2 / ramp) per step.
+  EXPECT_LT(worst, 2.0 * v * sim.timeStep());
+}
+
+TEST(MdemTensile, SingleTubeStressStrainSlopeIsYATubeOverAFilm) {
+  Scene s = tubeBetweenGrips({"bonds", "local_damping"}, 0.002);
+  Simulation sim(s);
+  TensileRecorder rec(s, "");
+  EXPECT_EQ(rec.record(sim).stress, 0.0);  // unstressed at zero strain
+  while (sim.time() < 0.012) {
+    sim.run(10);
+    rec.record(sim);
+  }
+  // Least-squares slope over the constant-velocity part (strain > 0.4 %).
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (const TensileSample& t : rec.samples())
+    if (t.strain > 0.004) sx += t.strain, sy += t.stress, sxx += t.strain * t.strain, sxy += t.strain * t.stress, ++n;
+  ASSERT_GT(n, 5);
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double expected = 1e6 * units::kPi * kTubeRadius * kTubeRadius / kFilm;  // Y A / A_film, MPa
+  std::printf("single tube: slope %.6g MPa, Y A / A_film %.6g MPa, final strain %.4f\n", slope, expected,
+              rec.samples().back().strain);
+  EXPECT_NEAR(slope, expected, 0.01 * expected);
+}
+
+TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
+  Scene s = tubeBetweenGrips({"bonds"}, 0.002);  // no damping: the balance is exact up to Verlet
+  Simulation sim(s);
+  TensileRecorder rec(s, "");
+  rec.record(sim);
+  while (sim.time() < 0.01) {
+    sim.run(2);
+    rec.record(sim);
+  }
+  const TensileSample& last = rec.samples().back();
+  const Energies& e = last.energies;
+  const double parts = e.bonds.stretching + e.bonds.shearing + e.bonds.twisting + e.bonds.bending + e.vdw +
+                       e.kineticTranslational + e.kineticRotational;
+  const double change = e.total() - rec.samples().front().energies.total();
+  std::printf("grip work %.6g zJ, energy change %.6g zJ (stretching %.6g, kinetic %.6g)\n", last.gripWork, change,
+              e.bonds.stretching, e.kineticTranslational);
+  EXPECT_NEAR(parts, e.total(), 1e-9 * std::abs(e.total()));
+  EXPECT_GT(last.gripWork, 0.0);
+  EXPECT_NEAR(change, last.gripWork, 0.01 * last.gripWork);
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
