@@ -1,5 +1,6 @@
 #include "skgen/atom.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -68,8 +69,10 @@ AtomSolution solveAtom(const AtomSettings& s) {
   for (const auto& sh : s.shells) {
     if (sh.l < 0 || sh.l >= sh.n)
       throw InputError(s.name, fmt::format("shell n={} l={}", sh.n, sh.l), "l >= n", "0 <= l < n");
-    if (sh.occupation[0] < 0 || sh.occupation[1] < 0 ||
-        sh.occupation[0] + sh.occupation[1] > 2.0 * (2 * sh.l + 1) + 1e-12)
+    const double capacity = 2 * sh.l + 1;
+    const bool over = s.polarised ? std::max(sh.occupation[0], sh.occupation[1]) > capacity + s.overfill
+                                  : sh.occupation[0] + sh.occupation[1] > 2.0 * capacity + s.overfill;
+    if (sh.occupation[0] < 0 || sh.occupation[1] < 0 || over)
       throw InputError(s.name, fmt::format("shell n={} l={}", sh.n, sh.l),
                        fmt::format("occupation {} + {}", sh.occupation[0], sh.occupation[1]),
                        fmt::format("0 to {} electrons per spin", 2 * sh.l + 1));

@@ -23,6 +23,18 @@ AtomSettings atomSettings(const Element& e, const ElementSettings& s, XcKind xc,
 }
 }  // namespace
 
+AtomSettings freeAtomSettings(const ElementSettings& s, XcKind xc) {
+  return atomSettings(findElement(s.symbol, s.source, "element"), s, xc, Confinement::none());
+}
+
+void addSpinData(const ElementSettings& s, ElementBasis& b) {
+  const Element& e = findElement(s.symbol, s.source, "element");
+  AtomSettings free = freeAtomSettings(s, s.xc);
+  free.tolerance = 1e-10;
+  b.data.spinConstants = occupationDerivatives(free, e.valence).w;
+  b.data.spinPolarisationEnergy = spinPolarisationEnergy(free);
+}
+
 ElementBasis buildElementBasis(const ElementSettings& s) {
   ElementBasis b;
   b.element = &findElement(s.symbol, s.source, "element");

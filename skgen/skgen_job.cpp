@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 #include <toml.hpp>
 
 #include "common/errors.hpp"
@@ -279,8 +281,49 @@ std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
   return doc;
 }
 
-std::vector<std::string> runSkgen(const SkgenJob& job,
-                                  const std::function<void(double, const std::string&)>& progress) {
+std::string atomicDataJson(const SkgenJob& job,
+                           const std::vector<std::pair<std::string, const ElementBasis*>>& elements) {
+  nlohmann::ordered_json root;
+  root["code"] = "mesochain skgen";
+  root["input"] = job.source;
+  root["functional"] = xcName(job.xc);
+  root["hubbard_functional"] = xcName(job.hubbardXc);
+  root["notes"] =
+      "Free spherical atom. onsite_Ha: Kohn-Sham levels; hubbard_Ha: dε/dn of the highest "
+      "occupied shell (hubbard_functional); spin_constants_Ha: W_ll' = ½(∂ε_l↑/∂n_l'↑ − "
+      "∂ε_l↑/∂n_l'↓) of the valence shells in shell order (DFTB+ SpinConstants), empty shells "
+      "take the values of the highest occupied one; spin_polarisation_energy_Ha: E(Hund's-rule "
+      "spin-polarised atom) − E(unpolarised atom), the SPE field of the .skf atomic line "
+      "(functional for W and SPE: functional)";
+  nlohmann::ordered_json list = nlohmann::ordered_json::object();
+  for (const auto& [symbol, b] : elements) {
+    const Element& e = *b->element;
+    nlohmann::ordered_json el;
+    el["z"] = e.z;
+    el["mass_amu"] = e.mass;
+    std::vector<std::string> shells;
+    nlohmann::ordered_json onsite, u, occ;
+    for (int k : e.valence) {
+      const std::string name = fmt::format("{}{}", e.shells[k].n, kShellNames[e.shells[k].l]);
+      shells.push_back(name);
+      onsite[name] = b->data.onsite[e.shells[k].l];
+      u[name] = b->data.hubbard[e.shells[k].l];
+      occ[name] = b->data.occupation[e.shells[k].l];
+    }
+    el["valence_shells"] = shells;
+    el["onsite_Ha"] = onsite;
+    el["hubbard_Ha"] = u;
+    el["occupation"] = occ;
+    el["spin_constants_Ha"] = b->data.spinConstants;
+    el["spin_polarisation_energy_Ha"] = b->data.spinPolarisationEnergy;
+    list[symbol] = el;
+  }
+  root["elements"] = list;
+  return root.dump(2) + "\n";
+}
+
+SkgenOutput runSkgen(const SkgenJob& job,
+                     const std::function<void(double, const std::string&)>& progress) {
   // work units: 1 per element, rows per pair (an element costs roughly as much as 40 rows)
   const int rows = static_cast<int>(std::floor(job.grid.cutoff / job.grid.spacing + 1e-9));
   const double perElement = 40.0;
@@ -293,12 +336,16 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
   std::map<std::string, const ElementSettings*> settings;
   for (const ElementSettings& e : job.elements) {
     report("atom " + e.symbol);
-    bases.emplace(e.symbol, buildElementBasis(e));
+    ElementBasis b = buildElementBasis(e);
+    report("spin " + e.symbol);
+    addSpinData(e, b);
+    bases.emplace(e.symbol, std::move(b));
     settings[e.symbol] = &e;
     done += perElement;
   }
   std::filesystem::create_directories(job.outputDir);
-  std::vector<std::string> written;
+  SkgenOutput output;
+  std::vector<std::string>& written = output.tables;
   std::map<std::string, dftb::SplineRepulsiveData> fitted;
   for (const auto& [a, b] : job.pairs) {
     const std::string name = a + "-" + b;
@@ -325,9 +372,16 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
     writeSkfFile(path, t, skgenDocumentation(job, *settings.at(a), *settings.at(b), rep));
     written.push_back(path);
   }
+  std::vector<std::pair<std::string, const ElementBasis*>> elements;
+  for (const ElementSettings& e : job.elements) elements.emplace_back(e.symbol, &bases.at(e.symbol));
+  output.atomicData = (std::filesystem::path(job.outputDir) / "atomic-data.json").string();
+  std::ofstream json(output.atomicData);
+  if (!json) throw InputError(output.atomicData, "cannot write the atomic data");
+  json << atomicDataJson(job, elements);
+  if (!json) throw InputError(output.atomicData, "writing the atomic data failed");
   done = total;
   report("done");
-  return written;
+  return output;
 }
 
 }  // namespace mesochain::skgen
