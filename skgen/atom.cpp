@@ -57,6 +57,7 @@ struct Step {
   std::vector<std::vector<double>> nOut;
   std::vector<std::vector<double>> v;  // potentials used (no confinement)
   std::vector<double> vH;
+  std::vector<std::vector<double>> vxc;
   std::vector<ShellSolution> shells;
   AtomEnergies e;
 };
@@ -118,6 +119,7 @@ AtomSolution solveAtom(const AtomSettings& s) {
     st.vH = hartreePotential(g, nTot);
     double exc = 0.0;
     st.v = xc.radialPotential(g, nIn, exc);
+    st.vxc = st.v;
     for (int sp = 0; sp < ns; ++sp)
       for (int i = 0; i < np; ++i) st.v[sp][i] += vnuc[i] + st.vH[i];
     st.nOut.assign(ns, std::vector<double>(np, 0.0));
@@ -225,6 +227,7 @@ AtomSolution solveAtom(const AtomSettings& s) {
       out.density = std::move(st.nOut);
       out.potential = std::move(st.v);
       out.hartree = std::move(st.vH);
+      out.xc = std::move(st.vxc);
       out.energies = st.e;
       out.iterations = it;
       out.residual = residual;

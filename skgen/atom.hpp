@@ -67,6 +67,7 @@ struct AtomSolution {
   std::vector<std::vector<double>> density;    // per spin (unpolarised: total), electrons/bohr³
   std::vector<std::vector<double>> potential;  // v_nuc + v_H + v_xc per spin, no confinement
   std::vector<double> hartree;                 // v_H
+  std::vector<std::vector<double>> xc;         // v_xc per spin (GGA: with the divergence term)
   AtomEnergies energies;
   int iterations = 0;
   double residual = 0.0;

@@ -64,6 +64,7 @@ ElementBasis buildElementBasis(const ElementSettings& s) {
   b.atom.grid = dens.grid;
   b.atom.density = dens.totalDensity();
   b.atom.hartree = dens.hartree;
+  b.atom.xc = dens.xc[0];
 
   // one wavefunction-confined atom per valence shell
   for (std::size_t k = 0; k < e.valence.size(); ++k) {

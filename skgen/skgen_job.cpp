@@ -128,7 +128,8 @@ SkgenJob readSkgenJob(const std::string& path) {
   SkgenJob job;
   job.source = path;
   const TomlTable top(path, root, "");
-  top.allowOnly({"functional", "hubbard_functional", "output_dir", "pairs", "grid", "elements", "repulsive"});
+  top.allowOnly({"functional", "hubbard_functional", "superposition", "output_dir", "pairs", "grid",
+                 "elements", "repulsive"});
   job.xc = parseXcKind(top.string("functional", "\"none\", \"lda\", \"lda-vwn\" or \"pbe\""), path);
   job.hubbardXc = top.has("hubbard_functional")
                       ? parseXcKind(top.string("hubbard_functional", "a functional name"), path)
@@ -163,6 +164,13 @@ SkgenJob readSkgenJob(const std::string& path) {
   } else {
     job.grid.quadrature.nXi = job.grid.quadrature.nEta = 48;
     job.grid.quadrature.rMax = 20.0;
+  }
+
+  if (top.has("superposition")) {
+    const std::string sup = top.string("superposition", "\"density\" or \"potential\"");
+    if (sup == "density") job.grid.quadrature.superposition = Superposition::Density;
+    else if (sup == "potential") job.grid.quadrature.superposition = Superposition::Potential;
+    else top.fail("superposition", "\"" + sup + "\"", "\"density\" or \"potential\"");
   }
 
   if (!top.has("elements")) top.missing("elements", "a table [elements.SYMBOL] per element");
@@ -248,7 +256,8 @@ std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
   doc += fmt::format("    <Input>{}</Input>\n  </General>\n  <SK_table>\n", job.source);
   doc += fmt::format("    <Functional>{}</Functional>\n    <HubbardFunctional>{}</HubbardFunctional>\n",
                      xcName(job.xc), xcName(job.hubbardXc));
-  doc += "    <Superposition>density</Superposition>\n";
+  doc += fmt::format("    <Superposition>{}</Superposition>\n",
+                     job.grid.quadrature.superposition == Superposition::Potential ? "potential" : "density");
   doc += fmt::format("    <Grid spacing_bohr=\"{}\" cutoff_bohr=\"{}\" quadrature_points=\"{}\" "
                      "quadrature_extent_bohr=\"{}\"/>\n",
                      job.grid.spacing, job.grid.cutoff, job.grid.quadrature.nXi, job.grid.quadrature.rMax);

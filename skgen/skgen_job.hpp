@@ -4,6 +4,7 @@
 //
 //   functional = "pbe"                 # none | lda | lda-vwn | pbe
 //   hubbard_functional = "lda"         # optional (default: functional)
+//   superposition = "density"          # optional: "density" (default) or "potential"
 //   output_dir = "skf"                 # optional (default "skf"), relative to the working folder
 //   pairs = ["C-C", "C-H", "H-C", "H-H"]  # optional (default: every ordered pair)
 //   [grid]   spacing_bohr, cutoff_bohr, quadrature_points, quadrature_extent_bohr, atom_log_step

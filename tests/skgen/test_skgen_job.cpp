@@ -69,6 +69,15 @@ TEST(SkgenJob, ReadsTheRecipe) {
   EXPECT_EQ(job.pairs.size(), 1u);
   EXPECT_EQ(job.grid.quadrature.nXi, 32);
   EXPECT_EQ(job.hubbardXc, XcKind::Pbe);
+  EXPECT_EQ(job.grid.quadrature.superposition, Superposition::Density);  // the default
+  const SkgenJob pot = readSkgenJob(writeInput("pot", std::string("superposition = \"potential\"\n") + kHydrogen));
+  EXPECT_EQ(pot.grid.quadrature.superposition, Superposition::Potential);
+  EXPECT_NE(skgenDocumentation(pot, pot.elements[0], pot.elements[0], nullptr)
+                .find("<Superposition>potential</Superposition>"),
+            std::string::npos);
+  const std::string e = errorOf("sup", std::string("superposition = \"average\"\n") + kHydrogen);
+  EXPECT_NE(e.find("superposition"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"density\" or \"potential\""), std::string::npos) << e;
 }
 
 TEST(SkgenJob, RunWritesTablesTheReaderAccepts) {
