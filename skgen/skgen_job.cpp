@@ -1,6 +1,7 @@
 #include "skgen/skgen_job.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -96,7 +97,15 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
   if (t.has("shells")) shells = requireTable(t, "shells", "a table of shells, e.g. { 2s = {...}, 2p = {...} }");
   std::vector<std::string> names;
   for (int k : e.valence) names.push_back(fmt::format("{}{}", e.shells[k].n, kShellNames[e.shells[k].l]));
-  if (shells) shells->allowOnly(names);
+  if (shells) {
+    for (const std::string& k : shells->keys())
+      if (k.size() >= 2 && (k.back() == 'd' || k.back() == 'f') && std::isdigit(static_cast<unsigned char>(k[0])))
+        shells->fail(k, fmt::format("a {} shell", k.back()),
+                     fmt::format("the valence shells of {} ({}): skgen computes s and p shells only (d and "
+                                 "f atomic shells and two-centre integrals are not supported)",
+                                 symbol, fmt::join(names, ", ")));
+    shells->allowOnly(names);
+  }
   for (const std::string& n : names) {
     if (shells && shells->has(n)) {
       s.shells.push_back(readConfinement(requireTable(*shells, n, "a confinement table")));

@@ -116,6 +116,20 @@ TEST(SkgenJob, UnknownElementIsAClearError) {
   EXPECT_NE(e.find("elements.Xx"), std::string::npos) << e;
 }
 
+TEST(SkgenJob, DShellsAreAClearError) {
+  // an element whose valence needs d shells, and a d shell asked for on a first-row element
+  const std::string fe = errorOf("iron", replaced(replaced(kHydrogen, "[elements.H]", "[elements.Fe]"),
+                                                  "pairs = [\"H-H\"]", "pairs = [\"Fe-Fe\"]"));
+  EXPECT_NE(fe.find("Fe (Z = 26), whose valence needs d (or f) shells"), std::string::npos) << fe;
+  EXPECT_NE(fe.find("s and p shells only"), std::string::npos) << fe;
+  const std::string si = errorOf("silicon", replaced(kHydrogen, "[elements.H]", "[elements.Si]"));
+  EXPECT_NE(si.find("Si (Z = 14), not in skgen's element list"), std::string::npos) << si;
+  const std::string d = errorOf("dshell", std::string(kHydrogen) + "shells = { 3d = { r0_bohr = 3.0, power = 2 } }\n");
+  EXPECT_NE(d.find("elements.H.shells.3d"), std::string::npos) << d;
+  EXPECT_NE(d.find("a d shell"), std::string::npos) << d;
+  EXPECT_NE(d.find("s and p shells only"), std::string::npos) << d;
+}
+
 TEST(SkgenJob, CutoffShorterThanTheFirstGridPointIsAClearError) {
   const std::string e = errorOf("cutoff", replaced(kHydrogen, "cutoff_bohr = 6.0", "cutoff_bohr = 0.3"));
   EXPECT_NE(e.find("grid.cutoff_bohr"), std::string::npos) << e;
