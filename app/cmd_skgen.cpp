@@ -46,9 +46,11 @@ Command makeSkgenCommand() {
     if (!opt->outputDir.empty()) job.outputDir = opt->outputDir;
     std::function<void(double, const std::string&)> progress;
     if (!opt->quiet) progress = drawSkgenProgress;
-    const std::vector<std::string> files = skgen::runSkgen(job, progress);
+    const skgen::SkgenOutput out = skgen::runSkgen(job, progress);
+    const std::vector<std::string>& files = out.tables;
     if (!opt->quiet) std::fprintf(stderr, "\n");
     for (const std::string& f : files) std::cout << "wrote " << f << "\n";
+    std::cout << "wrote " << out.atomicData << " (atomic data: on-site energies, U, spin constants)\n";
     int fitted = 0;
     for (const auto& [a, b] : job.pairs)
       for (const auto& r : job.repulsive)

@@ -1,5 +1,6 @@
 #include "skgen/atom.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -56,6 +57,7 @@ struct Step {
   std::vector<std::vector<double>> nOut;
   std::vector<std::vector<double>> v;  // potentials used (no confinement)
   std::vector<double> vH;
+  std::vector<std::vector<double>> vxc;
   std::vector<ShellSolution> shells;
   AtomEnergies e;
 };
@@ -68,8 +70,10 @@ AtomSolution solveAtom(const AtomSettings& s) {
   for (const auto& sh : s.shells) {
     if (sh.l < 0 || sh.l >= sh.n)
       throw InputError(s.name, fmt::format("shell n={} l={}", sh.n, sh.l), "l >= n", "0 <= l < n");
-    if (sh.occupation[0] < 0 || sh.occupation[1] < 0 ||
-        sh.occupation[0] + sh.occupation[1] > 2.0 * (2 * sh.l + 1) + 1e-12)
+    const double capacity = 2 * sh.l + 1;
+    const bool over = s.polarised ? std::max(sh.occupation[0], sh.occupation[1]) > capacity + s.overfill
+                                  : sh.occupation[0] + sh.occupation[1] > 2.0 * capacity + s.overfill;
+    if (sh.occupation[0] < 0 || sh.occupation[1] < 0 || over)
       throw InputError(s.name, fmt::format("shell n={} l={}", sh.n, sh.l),
                        fmt::format("occupation {} + {}", sh.occupation[0], sh.occupation[1]),
                        fmt::format("0 to {} electrons per spin", 2 * sh.l + 1));
@@ -115,6 +119,7 @@ AtomSolution solveAtom(const AtomSettings& s) {
     st.vH = hartreePotential(g, nTot);
     double exc = 0.0;
     st.v = xc.radialPotential(g, nIn, exc);
+    st.vxc = st.v;
     for (int sp = 0; sp < ns; ++sp)
       for (int i = 0; i < np; ++i) st.v[sp][i] += vnuc[i] + st.vH[i];
     st.nOut.assign(ns, std::vector<double>(np, 0.0));
@@ -222,6 +227,7 @@ AtomSolution solveAtom(const AtomSettings& s) {
       out.density = std::move(st.nOut);
       out.potential = std::move(st.v);
       out.hartree = std::move(st.vH);
+      out.xc = std::move(st.vxc);
       out.energies = st.e;
       out.iterations = it;
       out.residual = residual;

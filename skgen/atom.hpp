@@ -42,6 +42,10 @@ struct AtomSettings {
   int history = 6;
   double tolerance = 1e-9;  // density residual, sqrt(∫ (n_out − n_in)² d³r)
   int maxIterations = 200;
+  // Electrons by which a shell may exceed its capacity (2l+1 per spin polarised, 2(2l+1)
+  // unpolarised): the finite-difference occupation derivatives of full shells (He 1s, Ne 2p)
+  // step just beyond it, along the smooth continuation of the Kohn-Sham equations (Janak).
+  double overfill = 1e-12;
 };
 
 struct ShellSolution {
@@ -63,6 +67,7 @@ struct AtomSolution {
   std::vector<std::vector<double>> density;    // per spin (unpolarised: total), electrons/bohr³
   std::vector<std::vector<double>> potential;  // v_nuc + v_H + v_xc per spin, no confinement
   std::vector<double> hartree;                 // v_H
+  std::vector<std::vector<double>> xc;         // v_xc per spin (GGA: with the divergence term)
   AtomEnergies energies;
   int iterations = 0;
   double residual = 0.0;

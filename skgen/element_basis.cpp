@@ -23,6 +23,18 @@ AtomSettings atomSettings(const Element& e, const ElementSettings& s, XcKind xc,
 }
 }  // namespace
 
+AtomSettings freeAtomSettings(const ElementSettings& s, XcKind xc) {
+  return atomSettings(findElement(s.symbol, s.source, "element"), s, xc, Confinement::none());
+}
+
+void addSpinData(const ElementSettings& s, ElementBasis& b) {
+  const Element& e = findElement(s.symbol, s.source, "element");
+  AtomSettings free = freeAtomSettings(s, s.xc);
+  free.tolerance = 1e-10;
+  b.data.spinConstants = occupationDerivatives(free, e.valence).w;
+  b.data.spinPolarisationEnergy = spinPolarisationEnergy(free);
+}
+
 ElementBasis buildElementBasis(const ElementSettings& s) {
   ElementBasis b;
   b.element = &findElement(s.symbol, s.source, "element");
@@ -52,6 +64,7 @@ ElementBasis buildElementBasis(const ElementSettings& s) {
   b.atom.grid = dens.grid;
   b.atom.density = dens.totalDensity();
   b.atom.hartree = dens.hartree;
+  b.atom.xc = dens.xc[0];
 
   // one wavefunction-confined atom per valence shell
   for (std::size_t k = 0; k < e.valence.size(); ++k) {

@@ -33,4 +33,13 @@ struct ElementBasis {
 
 ElementBasis buildElementBasis(const ElementSettings& s);
 
+// The settings of the element's free (unconfined) atom with functional `xc`: ground-state
+// occupations split equally over the spins, the element's basis and grid.
+AtomSettings freeAtomSettings(const ElementSettings& s, XcKind xc);
+
+// Fills b.data.spinConstants (W of the valence shells, skgen/atomic_data.hpp) and
+// b.data.spinPolarisationEnergy from the free atom with the tables' functional s.xc. Separate
+// from buildElementBasis because it solves 4 spin-polarised atoms per occupied valence shell.
+void addSpinData(const ElementSettings& s, ElementBasis& b);
+
 }  // namespace mesochain::skgen

@@ -1,5 +1,7 @@
 #include "skgen/elements.hpp"
 
+#include <fmt/format.h>
+
 #include "common/errors.hpp"
 
 namespace mesochain::skgen {
@@ -20,12 +22,42 @@ const std::vector<Element>& table() {
   };
   return t;
 }
+
+// Atomic number of a chemical symbol (0 when it is none).
+int atomicNumber(const std::string& symbol) {
+  static const char* const kSymbols[] = {
+      "H",  "He", "Li", "Be", "B",  "C",  "N",  "O",  "F",  "Ne", "Na", "Mg", "Al", "Si", "P",
+      "S",  "Cl", "Ar", "K",  "Ca", "Sc", "Ti", "V",  "Cr", "Mn", "Fe", "Co", "Ni", "Cu", "Zn",
+      "Ga", "Ge", "As", "Se", "Br", "Kr", "Rb", "Sr", "Y",  "Zr", "Nb", "Mo", "Tc", "Ru", "Rh",
+      "Pd", "Ag", "Cd", "In", "Sn", "Sb", "Te", "I",  "Xe", "Cs", "Ba", "La", "Ce", "Pr", "Nd",
+      "Pm", "Sm", "Eu", "Gd", "Tb", "Dy", "Ho", "Er", "Tm", "Yb", "Lu", "Hf", "Ta", "W",  "Re",
+      "Os", "Ir", "Pt", "Au", "Hg", "Tl", "Pb", "Bi", "Po", "At", "Rn", "Fr", "Ra", "Ac", "Th",
+      "Pa", "U",  "Np", "Pu", "Am", "Cm", "Bk", "Cf", "Es", "Fm", "Md", "No", "Lr", "Rf", "Db",
+      "Sg", "Bh", "Hs", "Mt", "Ds", "Rg", "Cn", "Nh", "Fl", "Mc", "Lv", "Ts", "Og"};
+  for (int z = 1; z <= 118; ++z)
+    if (symbol == kSymbols[z - 1]) return z;
+  return 0;
+}
+
+// d (or f) valence: the transition metals, lanthanides and actinides.
+bool needsD(int z) {
+  return (z >= 21 && z <= 30) || (z >= 39 && z <= 48) || (z >= 57 && z <= 80) || (z >= 89 && z <= 112);
+}
 }  // namespace
 
 const Element& findElement(const std::string& symbol, const std::string& source,
                            const std::string& key) {
   for (const auto& e : table())
     if (e.symbol == symbol) return e;
+  const int z = atomicNumber(symbol);
+  if (z > 0 && needsD(z))
+    throw InputError(source, key,
+                     fmt::format("the element {} (Z = {}), whose valence needs d (or f) shells", symbol, z),
+                     "an element from H to Ne: skgen computes s and p shells only (d and f "
+                     "atomic shells and two-centre integrals are not supported)");
+  if (z > 0)
+    throw InputError(source, key, fmt::format("the element {} (Z = {}), not in skgen's element list", symbol, z),
+                     "an element from H to Ne (the table generator's element list)");
   throw InputError(source, key, "unknown element '" + symbol + "'",
                    "an element from H to Ne (the table generator's element list)");
 }

@@ -30,6 +30,7 @@ dftb::SkfTable buildSkTable(const ElementBasis& a, const ElementBasis& b, XcKind
     t.onsite = a.data.onsite;
     t.hubbard = a.data.hubbard;
     t.occupation = a.data.occupation;
+    t.spinPolarisationError = a.data.spinPolarisationEnergy;
     t.mass = a.element->mass;
   }
   const XcFunctional f(xc, false);

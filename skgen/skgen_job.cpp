@@ -1,12 +1,15 @@
 #include "skgen/skgen_job.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 #include <toml.hpp>
 
 #include "common/errors.hpp"
@@ -94,7 +97,15 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
   if (t.has("shells")) shells = requireTable(t, "shells", "a table of shells, e.g. { 2s = {...}, 2p = {...} }");
   std::vector<std::string> names;
   for (int k : e.valence) names.push_back(fmt::format("{}{}", e.shells[k].n, kShellNames[e.shells[k].l]));
-  if (shells) shells->allowOnly(names);
+  if (shells) {
+    for (const std::string& k : shells->keys())
+      if (k.size() >= 2 && (k.back() == 'd' || k.back() == 'f') && std::isdigit(static_cast<unsigned char>(k[0])))
+        shells->fail(k, fmt::format("a {} shell", k.back()),
+                     fmt::format("the valence shells of {} ({}): skgen computes s and p shells only (d and "
+                                 "f atomic shells and two-centre integrals are not supported)",
+                                 symbol, fmt::join(names, ", ")));
+    shells->allowOnly(names);
+  }
   for (const std::string& n : names) {
     if (shells && shells->has(n)) {
       s.shells.push_back(readConfinement(requireTable(*shells, n, "a confinement table")));
@@ -126,7 +137,8 @@ SkgenJob readSkgenJob(const std::string& path) {
   SkgenJob job;
   job.source = path;
   const TomlTable top(path, root, "");
-  top.allowOnly({"functional", "hubbard_functional", "output_dir", "pairs", "grid", "elements", "repulsive"});
+  top.allowOnly({"functional", "hubbard_functional", "superposition", "output_dir", "pairs", "grid",
+                 "elements", "repulsive"});
   job.xc = parseXcKind(top.string("functional", "\"none\", \"lda\", \"lda-vwn\" or \"pbe\""), path);
   job.hubbardXc = top.has("hubbard_functional")
                       ? parseXcKind(top.string("hubbard_functional", "a functional name"), path)
@@ -161,6 +173,13 @@ SkgenJob readSkgenJob(const std::string& path) {
   } else {
     job.grid.quadrature.nXi = job.grid.quadrature.nEta = 48;
     job.grid.quadrature.rMax = 20.0;
+  }
+
+  if (top.has("superposition")) {
+    const std::string sup = top.string("superposition", "\"density\" or \"potential\"");
+    if (sup == "density") job.grid.quadrature.superposition = Superposition::Density;
+    else if (sup == "potential") job.grid.quadrature.superposition = Superposition::Potential;
+    else top.fail("superposition", "\"" + sup + "\"", "\"density\" or \"potential\"");
   }
 
   if (!top.has("elements")) top.missing("elements", "a table [elements.SYMBOL] per element");
@@ -246,7 +265,8 @@ std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
   doc += fmt::format("    <Input>{}</Input>\n  </General>\n  <SK_table>\n", job.source);
   doc += fmt::format("    <Functional>{}</Functional>\n    <HubbardFunctional>{}</HubbardFunctional>\n",
                      xcName(job.xc), xcName(job.hubbardXc));
-  doc += "    <Superposition>density</Superposition>\n";
+  doc += fmt::format("    <Superposition>{}</Superposition>\n",
+                     job.grid.quadrature.superposition == Superposition::Potential ? "potential" : "density");
   doc += fmt::format("    <Grid spacing_bohr=\"{}\" cutoff_bohr=\"{}\" quadrature_points=\"{}\" "
                      "quadrature_extent_bohr=\"{}\"/>\n",
                      job.grid.spacing, job.grid.cutoff, job.grid.quadrature.nXi, job.grid.quadrature.rMax);
@@ -279,8 +299,49 @@ std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,
   return doc;
 }
 
-std::vector<std::string> runSkgen(const SkgenJob& job,
-                                  const std::function<void(double, const std::string&)>& progress) {
+std::string atomicDataJson(const SkgenJob& job,
+                           const std::vector<std::pair<std::string, const ElementBasis*>>& elements) {
+  nlohmann::ordered_json root;
+  root["code"] = "mesochain skgen";
+  root["input"] = job.source;
+  root["functional"] = xcName(job.xc);
+  root["hubbard_functional"] = xcName(job.hubbardXc);
+  root["notes"] =
+      "Free spherical atom. onsite_Ha: Kohn-Sham levels; hubbard_Ha: dε/dn of the highest "
+      "occupied shell (hubbard_functional); spin_constants_Ha: W_ll' = ½(∂ε_l↑/∂n_l'↑ − "
+      "∂ε_l↑/∂n_l'↓) of the valence shells in shell order (DFTB+ SpinConstants), empty shells "
+      "take the values of the highest occupied one; spin_polarisation_energy_Ha: E(Hund's-rule "
+      "spin-polarised atom) − E(unpolarised atom), the SPE field of the .skf atomic line "
+      "(functional for W and SPE: functional)";
+  nlohmann::ordered_json list = nlohmann::ordered_json::object();
+  for (const auto& [symbol, b] : elements) {
+    const Element& e = *b->element;
+    nlohmann::ordered_json el;
+    el["z"] = e.z;
+    el["mass_amu"] = e.mass;
+    std::vector<std::string> shells;
+    nlohmann::ordered_json onsite, u, occ;
+    for (int k : e.valence) {
+      const std::string name = fmt::format("{}{}", e.shells[k].n, kShellNames[e.shells[k].l]);
+      shells.push_back(name);
+      onsite[name] = b->data.onsite[e.shells[k].l];
+      u[name] = b->data.hubbard[e.shells[k].l];
+      occ[name] = b->data.occupation[e.shells[k].l];
+    }
+    el["valence_shells"] = shells;
+    el["onsite_Ha"] = onsite;
+    el["hubbard_Ha"] = u;
+    el["occupation"] = occ;
+    el["spin_constants_Ha"] = b->data.spinConstants;
+    el["spin_polarisation_energy_Ha"] = b->data.spinPolarisationEnergy;
+    list[symbol] = el;
+  }
+  root["elements"] = list;
+  return root.dump(2) + "\n";
+}
+
+SkgenOutput runSkgen(const SkgenJob& job,
+                     const std::function<void(double, const std::string&)>& progress) {
   // work units: 1 per element, rows per pair (an element costs roughly as much as 40 rows)
   const int rows = static_cast<int>(std::floor(job.grid.cutoff / job.grid.spacing + 1e-9));
   const double perElement = 40.0;
@@ -293,12 +354,16 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
   std::map<std::string, const ElementSettings*> settings;
   for (const ElementSettings& e : job.elements) {
     report("atom " + e.symbol);
-    bases.emplace(e.symbol, buildElementBasis(e));
+    ElementBasis b = buildElementBasis(e);
+    report("spin " + e.symbol);
+    addSpinData(e, b);
+    bases.emplace(e.symbol, std::move(b));
     settings[e.symbol] = &e;
     done += perElement;
   }
   std::filesystem::create_directories(job.outputDir);
-  std::vector<std::string> written;
+  SkgenOutput output;
+  std::vector<std::string>& written = output.tables;
   std::map<std::string, dftb::SplineRepulsiveData> fitted;
   for (const auto& [a, b] : job.pairs) {
     const std::string name = a + "-" + b;
@@ -325,9 +390,16 @@ std::vector<std::string> runSkgen(const SkgenJob& job,
     writeSkfFile(path, t, skgenDocumentation(job, *settings.at(a), *settings.at(b), rep));
     written.push_back(path);
   }
+  std::vector<std::pair<std::string, const ElementBasis*>> elements;
+  for (const ElementSettings& e : job.elements) elements.emplace_back(e.symbol, &bases.at(e.symbol));
+  output.atomicData = (std::filesystem::path(job.outputDir) / "atomic-data.json").string();
+  std::ofstream json(output.atomicData);
+  if (!json) throw InputError(output.atomicData, "cannot write the atomic data");
+  json << atomicDataJson(job, elements);
+  if (!json) throw InputError(output.atomicData, "writing the atomic data failed");
   done = total;
   report("done");
-  return written;
+  return output;
 }
 
 }  // namespace mesochain::skgen

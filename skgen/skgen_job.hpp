@@ -4,6 +4,7 @@
 //
 //   functional = "pbe"                 # none | lda | lda-vwn | pbe
 //   hubbard_functional = "lda"         # optional (default: functional)
+//   superposition = "density"          # optional: "density" (default) or "potential"
 //   output_dir = "skf"                 # optional (default "skf"), relative to the working folder
 //   pairs = ["C-C", "C-H", "H-C", "H-H"]  # optional (default: every ordered pair)
 //   [grid]   spacing_bohr, cutoff_bohr, quadrature_points, quadrature_extent_bohr, atom_log_step
@@ -53,13 +54,22 @@ struct SkgenJob {
 // setting is an InputError naming the file and the key (with its line).
 SkgenJob readSkgenJob(const std::string& path);
 
-// Builds every element (free, density- and wavefunction-confined atoms) and every pair table;
-// writes outputDir/A-B.skf with the fitted repulsive of the pair, or the explicit zero repulsive
-// when none is requested, and a
-// documentation block of the recipe. `progress(fraction, what)` along the way. Returns the paths
-// written. A confinement radius too small for a bound state is an InputError naming the shell.
-std::vector<std::string> runSkgen(const SkgenJob& job,
-                                  const std::function<void(double, const std::string&)>& progress = {});
+// Builds every element (free, density- and wavefunction-confined atoms, spin data of the free
+// atom) and every pair table; writes outputDir/A-B.skf with the fitted repulsive of the pair, or
+// the explicit zero repulsive when none is requested, and a documentation block of the recipe,
+// and outputDir/atomic-data.json (atomicDataJson). `progress(fraction, what)` along the way.
+// A confinement radius too small for a bound state is an InputError naming the shell.
+struct SkgenOutput {
+  std::vector<std::string> tables;  // the .skf files, in pair order
+  std::string atomicData;           // the JSON of atomic data
+};
+SkgenOutput runSkgen(const SkgenJob& job,
+                     const std::function<void(double, const std::string&)>& progress = {});
+
+// Atomic data of every element as JSON text (units in the key names): on-site energies, Hubbard
+// U, occupations, spin constants W (DFTB+ SpinConstants order: the valence shells, row-major),
+// the spin-polarisation energy (the .skf "SPE" field), functionals, mass.
+std::string atomicDataJson(const SkgenJob& job, const std::vector<std::pair<std::string, const ElementBasis*>>& elements);
 
 // The documentation block written after the spline (recipe of the two elements).
 std::string skgenDocumentation(const SkgenJob& job, const ElementSettings& a,

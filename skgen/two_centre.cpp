@@ -128,6 +128,9 @@ std::vector<SkIntegral> twoCentreIntegrals(const std::vector<TwoCentreOrbital>& 
 
   // Potential of the superposition at every point.
   std::vector<double> vloc(np, 0.0), vrho, vsig, nr(np), nz(np);
+  const bool potentialSum = withH && q.superposition == Superposition::Potential;
+  if (potentialSum && (atomA->xc.size() != atomA->density.size() || atomB->xc.size() != atomB->density.size()))
+    throw std::invalid_argument("potential superposition: an atom without its xc potential");
   if (withH) {
     std::vector<double> rhoTot(np), sigma;
     for (int k = 0; k < np; ++k) {
@@ -139,11 +142,13 @@ std::vector<SkIntegral> twoCentreIntegrals(const std::vector<TwoCentreOrbital>& 
       atomB->grid.interpolateWithDerivative(atomB->density, rB, nB, dnB);
       vloc[k] = -atomA->z / rA + atomA->grid.interpolate(atomA->hartree, rA) - atomB->z / rB +
                 atomB->grid.interpolate(atomB->hartree, rB);
+      if (potentialSum)
+        vloc[k] += atomA->grid.interpolate(atomA->xc, rA) + atomB->grid.interpolate(atomB->xc, rB);
       rhoTot[k] = std::max(0.0, nA + nB);
       nr[k] = dnA * prho[k] / rA + dnB * prho[k] / rB;
       nz[k] = dnA * pz[k] / rA + dnB * zB / rB;
     }
-    if (xc && xc->kind() != XcKind::None) {
+    if (xc && xc->kind() != XcKind::None && !potentialSum) {
       if (xc->polarised()) throw std::invalid_argument("two-centre xc: spin-unpolarised only");
       if (xc->isGga()) {
         sigma.resize(np);

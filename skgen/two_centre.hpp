@@ -13,6 +13,11 @@
 //   H_ab = ⟨a| T + V_A + V_B + v_xc[n_A + n_B] |b⟩,   V_X = −Z_X/r_X + v_H[n_X],
 // with T φ_b = (ε_b − v_b − v_conf,b) φ_b from the radial equation φ_b solves. GGA: the xc matrix
 // element in the weak form ∫ (∂e/∂n) φ_a φ_b + 2 (∂e/∂σ) ∇n·∇(φ_a φ_b).
+// Or with the potential superposition (Eschrig's other choice; e.g. Koskinen & Mäkinen, Comput.
+// Mater. Sci. 47, 237 (2009)): H_ab = ⟨a| T + V_A + V_B + v_xc[n_A] + v_xc[n_B] |b⟩, each
+// atom's own Kohn-Sham potential (radial, GGA in the strong form with its divergence term).
+// Nuclear and Hartree parts are linear in the density, so the two differ only by the
+// non-linearity of exchange-correlation (identical without it).
 #include <vector>
 
 #include "skgen/radial_grid.hpp"
@@ -40,13 +45,18 @@ struct TwoCentreAtom {
   LogGrid grid;
   std::vector<double> density;  // total spherical density n(r)
   std::vector<double> hartree;  // v_H[n](r)
+  std::vector<double> xc;       // v_xc[n](r) of the atom's own density (potential superposition)
 };
+
+enum class Superposition { Density, Potential };
 
 struct TwoCentreQuadrature {
   int nXi = 64;
   int nEta = 64;
   double rMax = 25.0;  // extent in (r_A + r_B − d)/2, Bohr
   double clustering = 0.2;  // c of the ξ map (Bohr)
+  // (not a quadrature setting, but carried with it to every caller of the integrals)
+  Superposition superposition = Superposition::Density;
 };
 
 struct SkIntegral {

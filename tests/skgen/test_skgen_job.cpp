@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "common/errors.hpp"
 #include "dftb/skf_file.hpp"
 #include "skgen/skgen_job.hpp"
@@ -67,6 +69,15 @@ TEST(SkgenJob, ReadsTheRecipe) {
   EXPECT_EQ(job.pairs.size(), 1u);
   EXPECT_EQ(job.grid.quadrature.nXi, 32);
   EXPECT_EQ(job.hubbardXc, XcKind::Pbe);
+  EXPECT_EQ(job.grid.quadrature.superposition, Superposition::Density);  // the default
+  const SkgenJob pot = readSkgenJob(writeInput("pot", std::string("superposition = \"potential\"\n") + kHydrogen));
+  EXPECT_EQ(pot.grid.quadrature.superposition, Superposition::Potential);
+  EXPECT_NE(skgenDocumentation(pot, pot.elements[0], pot.elements[0], nullptr)
+                .find("<Superposition>potential</Superposition>"),
+            std::string::npos);
+  const std::string e = errorOf("sup", std::string("superposition = \"average\"\n") + kHydrogen);
+  EXPECT_NE(e.find("superposition"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"density\" or \"potential\""), std::string::npos) << e;
 }
 
 TEST(SkgenJob, RunWritesTablesTheReaderAccepts) {
@@ -74,24 +85,49 @@ TEST(SkgenJob, RunWritesTablesTheReaderAccepts) {
   job.outputDir = (std::filesystem::temp_directory_path() / "mesochain-skgen-run").string();
   double last = -1.0;
   bool monotone = true;
-  const auto files = runSkgen(job, [&](double f, const std::string&) {
+  const SkgenOutput out = runSkgen(job, [&](double f, const std::string&) {
     monotone = monotone && f >= last;
     last = f;
   });
-  ASSERT_EQ(files.size(), 1u);
+  ASSERT_EQ(out.tables.size(), 1u);
   EXPECT_TRUE(monotone);
   EXPECT_DOUBLE_EQ(last, 1.0);
-  const dftb::SkfTable t = dftb::readSkfFile(files[0], true);
+  const dftb::SkfTable t = dftb::readSkfFile(out.tables[0], true);
   EXPECT_EQ(t.rows(), 12);
   EXPECT_NEAR(t.onsite[0], -0.2386004, 1e-6);  // PBE hydrogen 1s (pbc-0-3 H-H.skf: -0.23860040)
   EXPECT_GT(t.over(3, dftb::kSkfSsSigma), 0.0);
   ASSERT_TRUE(t.spline.has_value());
+  // atomic data beside the tables: the PBE hydrogen spin constant (DFTB+ manual, PBE: -0.072)
+  // and the spin-polarisation energy, also in the SPE field of the atomic line
+  std::ifstream in(out.atomicData);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& h = j["elements"]["H"];
+  EXPECT_EQ(h["valence_shells"][0], "1s");
+  EXPECT_NEAR(h["spin_constants_Ha"][0][0].get<double>(), -0.072, 5e-4);
+  EXPECT_NEAR(h["onsite_Ha"]["1s"].get<double>(), t.onsite[0], 1e-15);
+  const double spe = h["spin_polarisation_energy_Ha"].get<double>();
+  EXPECT_LT(spe, -0.03);  // the polarised H atom lies lower (LDA: -0.0330, pbc-0-3 H-H.skf)
+  EXPECT_NEAR(t.spinPolarisationError, spe, 1e-15);
 }
 
 TEST(SkgenJob, UnknownElementIsAClearError) {
   const std::string e = errorOf("unknown", replaced(kHydrogen, "[elements.H]", "[elements.Xx]"));
   EXPECT_NE(e.find("unknown element 'Xx'"), std::string::npos) << e;
   EXPECT_NE(e.find("elements.Xx"), std::string::npos) << e;
+}
+
+TEST(SkgenJob, DShellsAreAClearError) {
+  // an element whose valence needs d shells, and a d shell asked for on a first-row element
+  const std::string fe = errorOf("iron", replaced(replaced(kHydrogen, "[elements.H]", "[elements.Fe]"),
+                                                  "pairs = [\"H-H\"]", "pairs = [\"Fe-Fe\"]"));
+  EXPECT_NE(fe.find("Fe (Z = 26), whose valence needs d (or f) shells"), std::string::npos) << fe;
+  EXPECT_NE(fe.find("s and p shells only"), std::string::npos) << fe;
+  const std::string si = errorOf("silicon", replaced(kHydrogen, "[elements.H]", "[elements.Si]"));
+  EXPECT_NE(si.find("Si (Z = 14), not in skgen's element list"), std::string::npos) << si;
+  const std::string d = errorOf("dshell", std::string(kHydrogen) + "shells = { 3d = { r0_bohr = 3.0, power = 2 } }\n");
+  EXPECT_NE(d.find("elements.H.shells.3d"), std::string::npos) << d;
+  EXPECT_NE(d.find("a d shell"), std::string::npos) << d;
+  EXPECT_NE(d.find("s and p shells only"), std::string::npos) << d;
 }
 
 TEST(SkgenJob, CutoffShorterThanTheFirstGridPointIsAClearError) {
