@@ -10,6 +10,7 @@
 
 #include "beam/si_units.hpp"
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 
 namespace mesochain::beam {
 
@@ -320,16 +321,7 @@ double tomlNumber(const toml::value& v, const std::string& key, const std::strin
 }  // namespace
 
 void readConstantsFile(const std::string& path, BeamInputs& in) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path, "", "no readable file", "an existing TOML constants file");
-  toml::value root;
-  try {
-    root = toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, std::string("TOML syntax error: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(path, std::string("cannot read: ") + e.what());
-  }
+  const toml::value root = parseTomlFile(path, "constants file");
   const double a2b = units::kAngstromInBohr, ev2ha = units::kEvInHartree;
   // key -> (slot or special, factor to atomic units)
   struct Key {

@@ -10,6 +10,7 @@
 
 #include "beam/plate.hpp"
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 #include "common/units.hpp"
 
 namespace mesochain::beam {
@@ -150,16 +151,7 @@ PlateRun runPlate(const PlateInputs& in) {
 }
 
 void readPlateFile(const std::string& path, PlateInputs& in) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path, "", "no readable file", "an existing TOML plate file");
-  toml::value root;
-  try {
-    root = toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, std::string("TOML syntax error: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(path, std::string("cannot read: ") + e.what());
-  }
+  const toml::value root = parseTomlFile(path, "plate file");
   in.source = path;
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   auto where = [&](const std::string& key, const toml::value& v) {

@@ -268,7 +268,7 @@ void readModelTables(const TomlTable& root, Scene& s) {
 }
 
 Scene loadScene(const std::string& path) {
-  const toml::value data = parseTomlFile(path);
+  const toml::value data = parseTomlFile(path, "scene file");
   const TomlTable root(data, path, "");
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
@@ -283,7 +283,7 @@ Scene loadScene(const std::string& path) {
     if (model.is_relative()) model = std::filesystem::path(path).parent_path() / model;
     if (!std::filesystem::is_regular_file(model))
       root.fail("model", "\"" + model.string() + "\", which does not exist", "an existing model file");
-    const toml::value m = parseTomlFile(model.string());
+    const toml::value m = parseTomlFile(model.string(), "model file");
     const TomlTable mroot(m, model.string(), "");
     mroot.allowOnly({"format", "element_types", "bond_types"});
     if (mroot.integer("format", 1) != 1) mroot.fail("format", std::to_string(mroot.integer("format")), "1");

@@ -151,16 +151,4 @@ std::vector<TomlTable> TomlTable::tables(const std::string& key) const {
   return out;
 }
 
-toml::value parseTomlFile(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path, "", "no readable file", "an existing TOML file");
-  try {
-    return toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, std::string("TOML syntax error: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(path, std::string("cannot read: ") + e.what());
-  }
-}
-
 }  // namespace mesochain::mdem

@@ -8,6 +8,8 @@
 
 #include <toml.hpp>
 
+#include "common/toml_file.hpp"
+
 #include "mdem/quaternion.hpp"
 
 namespace mesochain::mdem {
@@ -53,8 +55,5 @@ class TomlTable {
   std::string source_;
   std::string path_;
 };
-
-// Parses a file; a missing file or a syntax error is an InputError naming the file.
-toml::value parseTomlFile(const std::string& path);
 
 }  // namespace mesochain::mdem

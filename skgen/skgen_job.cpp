@@ -13,6 +13,7 @@
 #include <toml.hpp>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 #include "objective/core/toml_table.hpp"
 #include "skgen/repulsive_fit.hpp"
 #include "skgen/skf_writer.hpp"
@@ -124,16 +125,7 @@ std::string describeConfinement(const Confinement& c) { return c.describe(); }
 }  // namespace
 
 SkgenJob readSkgenJob(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path, "", "no readable file", "an existing TOML file of elements");
-  toml::value root;
-  try {
-    root = toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, std::string("TOML syntax error: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(path, std::string("cannot read: ") + e.what());
-  }
+  const toml::value root = parseTomlFile(path, "file of elements");
   SkgenJob job;
   job.source = path;
   const TomlTable top(path, root, "");

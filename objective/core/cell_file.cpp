@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 #include "common/units.hpp"
 #include "objective/core/cell_file_sections.hpp"
 #include "objective/core/text_reader.hpp"
@@ -252,18 +253,7 @@ void readTask(const TomlTable& root, CellInput& in) {
 CellInput readCellFile(const std::string& path) {
   CellInput in;
   in.source = path;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw InputError(path, "the cell file does not exist or is not a regular file");
-  toml::value data;
-  try {
-    data = toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, fmt::format("line {}", e.location().line()), "invalid TOML",
-                     std::string("valid TOML (") + e.what() + ")");
-  } catch (const std::exception& e) {
-    throw InputError(path, std::string("the file cannot be read as TOML: ") + e.what());
-  }
+  const toml::value data = parseTomlFile(path, "cell file");
   const TomlTable root(path, data, "");
   root.allowOnly({"format", "geometry", "builder", "symmetry", "kpoints", "electrons", "parameters",
                   "dispersion", "scc", "task"});
