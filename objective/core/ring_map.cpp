@@ -86,6 +86,33 @@ ObjectiveCell ringToStraight(const ObjectiveCell& ring, double radius) {
   return straight;
 }
 
+ObjectiveCell rebendSector(const ObjectiveCell& sector, double radiusFrom, double radiusTo,
+                           int rotationOrderTo) {
+  const int nFrom = sector.symmetry.rotationOrder();
+  if (rotationOrderTo < 2 || !(radiusTo > 0))
+    throw InputError(kSource, "rotation order", std::to_string(rotationOrderTo),
+                     "a ring of at least 2 sectors");
+  const double mid = kPi / nFrom;  // angles from the middle of the sector stay continuous
+  const double scale = static_cast<double>(nFrom) / rotationOrderTo;
+  ObjectiveCell out = sector;
+  for (int a = 0; a < sector.atomCount(); ++a) {
+    const Eigen::Vector3d p = sector.positions.col(a);
+    const double rel = std::atan2(p.y() * std::cos(mid) - p.x() * std::sin(mid),
+                                  p.x() * std::cos(mid) + p.y() * std::sin(mid));
+    const double theta = (mid + rel) * scale;
+    const double rho = std::hypot(p.x(), p.y()) - radiusFrom + radiusTo;
+    if (!(rho > 1.0))
+      throw InputError(kSource, fmt::format("rotation order {}", rotationOrderTo),
+                       fmt::format("a middle radius of {:.4f} Bohr, at which atom {} would sit "
+                                   "{:.4f} Bohr from the axis",
+                                   radiusTo, a + 1, rho),
+                       "a larger rotation order");
+    out.positions.col(a) << rho * std::cos(theta), rho * std::sin(theta), p.z();
+  }
+  out.symmetry = Symmetry::screw(sector.symmetry.translation(), 0.0, rotationOrderTo);
+  return out;
+}
+
 double meanRingRadius(const ObjectiveCell& ring) {
   if (ring.atomCount() == 0) return 0.0;
   return ring.positions.topRows(2).colwise().norm().mean();

@@ -47,6 +47,13 @@ ObjectiveCell straightToRing(const ObjectiveCell& straight, const BendFrame& fra
 // the nominal radius `radius`. Used to carry relaxed atoms from one ring to the next.
 ObjectiveCell ringToStraight(const ObjectiveCell& ring, double radius);
 
+// A sector cell (screw T along z with twist 0 and rotation order N_from, e.g. a bent graphene
+// stack from buildGrapheneRingSector) rebent to `rotationOrderTo` sectors: each atom at
+// (rho, theta, z) goes to (rho - radiusFrom + radiusTo, theta N_from / N_to, z), keeping arc
+// lengths along the line of radius radiusFrom -> radiusTo (the nominal middle radii).
+ObjectiveCell rebendSector(const ObjectiveCell& sector, double radiusFrom, double radiusTo,
+                           int rotationOrderTo);
+
 // Mean distance of the cell's atoms from the ring axis (Bohr): the measured radius of the
 // centroid line (its inverse is the measured curvature).
 double meanRingRadius(const ObjectiveCell& ring);

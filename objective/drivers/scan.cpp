@@ -52,22 +52,57 @@ struct PlanEntry {
   int from = -1;
 };
 
-std::vector<PlanEntry> makePlan(const ScanSettings& s, double t0) {
+// The geometry of a bend scan: rings from a straight translational cell, or (sector) a cell
+// that is already a sector of 2 pi / N_ref about z (a bent graphene stack) rebent to other N_a.
+struct BendSource {
+  bool sector = false;
+  int referenceOrder = 0;  // N_ref of a sector cell
+  double arc = 0.0;        // sector: arc length per cell along the middle radius (Bohr)
+};
+
+// Checks a list of ring orders (>= 2, distinct, not empty).
+void checkOrders(const std::vector<int>& orders) {
+  if (orders.empty())
+    throw InputError(kSource, "rotation orders", "an empty list", "at least one ring order N_a");
+  std::set<int> seen;
+  for (int n : orders) {
+    if (n < 2)
+      throw InputError(kSource, "rotation orders", std::to_string(n), "ring orders N_a >= 2");
+    if (!seen.insert(n).second)
+      throw InputError(kSource, "rotation orders", fmt::format("{} twice", n),
+                       "distinct ring orders");
+  }
+}
+
+std::vector<PlanEntry> makePlan(const ScanSettings& s, double t0, const BendSource& b) {
   std::vector<PlanEntry> plan{{0.0, 0.0, 0, -1}};
+  if (s.kind == ScanKind::Bend && b.sector) {
+    checkOrders(s.rotationOrders);
+    auto curvature = [&](int n) { return 2 * units::kPi / (n * b.arc); };
+    plan[0] = {curvature(b.referenceOrder), 0.0, b.referenceOrder, -1};
+    std::vector<int> gentler, tighter;
+    for (int n : s.rotationOrders) {
+      if (n > b.referenceOrder) gentler.push_back(n);
+      if (n < b.referenceOrder) tighter.push_back(n);
+    }
+    std::sort(gentler.begin(), gentler.end());
+    std::sort(tighter.rbegin(), tighter.rend());
+    for (const auto* side : {&gentler, &tighter}) {
+      int from = 0;
+      for (int n : *side) {
+        plan.push_back({curvature(n), 0.0, n, from});
+        from = static_cast<int>(plan.size()) - 1;
+      }
+    }
+    return plan;
+  }
   if (s.kind == ScanKind::Bend) {
-    if (s.rotationOrders.empty())
-      throw InputError(kSource, "rotation orders", "an empty list", "at least one ring order N_a");
+    checkOrders(s.rotationOrders);
     std::vector<int> orders = s.rotationOrders;
     std::sort(orders.rbegin(), orders.rend());
-    for (std::size_t k = 0; k < orders.size(); ++k) {
-      if (orders[k] < 2)
-        throw InputError(kSource, "rotation orders", std::to_string(orders[k]),
-                         "ring orders N_a >= 2");
-      if (k > 0 && orders[k] == orders[k - 1])
-        throw InputError(kSource, "rotation orders", fmt::format("{} twice", orders[k]),
-                         "distinct ring orders");
-      const double radius = orders[k] * t0 / (2 * units::kPi);
-      plan.push_back({1.0 / radius, 0.0, orders[k], static_cast<int>(plan.size()) - 1});
+    for (int n : orders) {
+      const double radius = n * t0 / (2 * units::kPi);
+      plan.push_back({1.0 / radius, 0.0, n, static_cast<int>(plan.size()) - 1});
     }
     return plan;
   }
@@ -110,8 +145,14 @@ std::string fnv1a(const std::string& text) {
 }
 
 // The warm-start cell of a point from the relaxed cell of its neighbour.
-ObjectiveCell startingCell(const ScanSettings& s, const PlanEntry& e, const ScanPoint& from,
-                           const ScanPoint& reference, double t0, double gamma0) {
+ObjectiveCell startingCell(const ScanSettings& s, const BendSource& b, const PlanEntry& e,
+                           const ScanPoint& from, const ScanPoint& reference, double t0,
+                           double gamma0) {
+  if (s.kind == ScanKind::Bend && b.sector) {
+    const double rFrom = from.rotationOrder * b.arc / (2 * units::kPi);
+    const double rTo = e.rotationOrder * b.arc / (2 * units::kPi);
+    return rebendSector(from.cell, rFrom, rTo, e.rotationOrder);
+  }
   if (s.kind == ScanKind::Bend) {
     if (e.from == 0)
       return straightToRing(reference.cell, bendFrame(reference.cell, s.direction),
@@ -165,13 +206,12 @@ std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSetti
 
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
                    const dftb::CalculatorSettings& calcSettings, const ScanSettings& s) {
-  if (s.kind == ScanKind::Bend && (cell.symmetry.isRing() || cell.symmetry.rotationOrder() != 1 ||
-                                   std::abs(cell.symmetry.twist()) > 1e-12))
+  if (s.kind == ScanKind::Bend && std::abs(cell.symmetry.twist()) > 1e-12)
     throw InputError(kSource, "the cell of a bend scan",
-                     fmt::format("rotation order {}, twist {:.6g} rad{}",
-                                 cell.symmetry.rotationOrder(), cell.symmetry.twist(),
-                                 cell.symmetry.isRing() ? ", a ring" : ""),
-                     "a straight translational cell (twist 0, rotation order 1)");
+                     fmt::format("rotation order {}, twist {:.6g} rad",
+                                 cell.symmetry.rotationOrder(), cell.symmetry.twist()),
+                     "a straight translational cell (twist 0, rotation order 1) or a sector "
+                     "of a ring (twist 0, rotation order >= 2, e.g. a bent graphene stack)");
   if (cell.symmetry.isRing())
     throw InputError(kSource, "the cell of a scan", "a closed ring (translation 0)",
                      "a straight cell (translation > 0)");
@@ -182,7 +222,13 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   out.inputHash = scanInputHash(cell, calcSettings, s);
   // Validates the lists before any work. The plan's curvatures need T0: the input's until the
   // reference is relaxed (or restored).
-  std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation());
+  BendSource bendSource;
+  if (s.kind == ScanKind::Bend && !cell.symmetry.isRing() && cell.symmetry.rotationOrder() >= 2) {
+    bendSource.sector = true;
+    bendSource.referenceOrder = cell.symmetry.rotationOrder();
+    bendSource.arc = 2 * units::kPi * meanRingRadius(cell) / bendSource.referenceOrder;
+  }
+  std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation(), bendSource);
 
   const dftb::Calculator straightCalc(params, calcSettings);
   dftb::CalculatorSettings ringSettings = calcSettings;
@@ -232,7 +278,8 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     p.helicalKPoints = ring ? 1 : band.helicalKPoints;
     p.angularPoints =
         HelicalKGrid(o.cell.symmetry, p.helicalKPoints, band.angular).angularCount();
-    if (ring) p.measuredCurvature = 1.0 / meanRingRadius(o.cell);
+    if (ring || (bendSource.sector && s.kind == ScanKind::Bend))
+      p.measuredCurvature = 1.0 / meanRingRadius(o.cell);
     p.cell = std::move(o.cell);
     return p;
   };
@@ -251,7 +298,8 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
       } else {
         const ScanPoint& ref = done.at(0);
         const ObjectiveCell start =
-            startingCell(s, plan[k], done.at(plan[k].from), ref, ref.cell.symmetry.translation(),
+            startingCell(s, bendSource, plan[k], done.at(plan[k].from), ref,
+                         ref.cell.symmetry.translation(),
                          ref.cell.symmetry.twist());
         done[k] = relaxPoint(plan[k], start, false, bar, k, total);
       }
@@ -261,7 +309,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
       bar.update(k + 1);
     }
     // Bend curvatures 1/R = 2 pi / (N_a T0) follow T0 of the relaxed reference.
-    if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation());
+    if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation(), bendSource);
   }
   bar.finish();
 
@@ -271,7 +319,8 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     const ObjectiveCell& ref = done.at(0).cell;
     out.translation0 = ref.symmetry.translation();
     out.twist0 = ref.symmetry.twist();
-    out.cellsPerSlice = ref.symmetry.rotationOrder();
+    out.cellsPerSlice = bendSource.sector ? 1 : ref.symmetry.rotationOrder();
+    if (bendSource.sector) out.translation0 = bendSource.arc;
     if (s.dimensionsInterlayer > 0) {
       const CollapsedDimensions d = measureCollapsed(ref, s.dimensionsInterlayer);
       out.thickness = d.thickness;

@@ -125,11 +125,11 @@ ScanInput readScanFile(const std::string& path) {
         root.fail("ring_angular", detail::describe(a), exp);
       }
     }
-    if (in.cell.cell.symmetry.isRing() || in.cell.cell.symmetry.rotationOrder() != 1 ||
-        std::abs(in.cell.cell.symmetry.twist()) > 1e-12)
-      root.fail("cell", "a cell that is not a straight translational cell (" + cellFile + ")",
-                "for kind = \"bend\" a cell with twist 0 and rotation order 1 (e.g. [builder] "
-                "cell = \"translational\", or type = \"collapsed\")");
+    if (!in.cell.cell.symmetry.isRing() && std::abs(in.cell.cell.symmetry.twist()) > 1e-12)
+      root.fail("cell", "a twisted cell (" + cellFile + ")",
+                "for kind = \"bend\" a cell with twist 0: a straight translational cell "
+                "(rotation order 1, e.g. [builder] cell = \"translational\" or type = "
+                "\"collapsed\"), or a ring sector (e.g. type = \"graphene_ring\")");
   }
   if (!s.values.empty() || !s.rotationOrders.empty()) {
     if (in.cell.cell.symmetry.isRing())

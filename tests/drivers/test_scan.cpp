@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_output.hpp"
@@ -236,4 +237,40 @@ TEST(Scan, SoftAndHardRingsOfARoundTubeAgree) {
   EXPECT_GT(soft.points[1].energy - soft.points[0].energy, 1e-3);
   EXPECT_NEAR(soft.points[1].energy, hard.points[1].energy, 1e-6);
   EXPECT_EQ(scanCurveJson(hard)["direction"], "hard");
+}
+
+TEST(Scan, GrapheneSectorsRebendWithTheInverseSquareLaw) {
+  // A graphene monolayer bent about z (armchair along the arc), one rectangular cell per
+  // sector: the scan rebends the N_a = 80 sector to 40 and 160 sectors. Differences between
+  // rings cancel the unknown flat energy: (E40 - E160) / (E80 - E160) = (4^2 - 1) / (2^2 - 1) = 5
+  // for U = 1/2 D / R^2.
+  const ObjectiveCell sector = buildGrapheneRingSector(1, Direction::Armchair, 80, 1, 0.0, kBond);
+  ScanSettings s;
+  s.kind = ScanKind::Bend;
+  s.rotationOrders = {40, 160};
+  s.relax.forceTolerance = 1e-5;
+  s.progressBar = false;
+  const ScanResult r = runScan(sector, carbon(), settings(32), s);
+  ASSERT_TRUE(r.complete);
+  ASSERT_EQ(r.points.size(), 3u);  // sorted by curvature: 160, 80, 40
+  EXPECT_EQ(r.points[0].rotationOrder, 160);
+  EXPECT_EQ(r.points[1].rotationOrder, 80);
+  EXPECT_EQ(r.points[2].rotationOrder, 40);
+  EXPECT_EQ(r.cellsPerSlice, 1);
+  EXPECT_NEAR(r.translation0, 3 * kBond, 1e-9);  // the arc per cell: one armchair period
+  // The ring radius is free: the sheet relaxes its lattice constant along the arc (built with
+  // 1.42 Å bonds; DFTB's is ~0.7 % longer), the same fraction at every radius, so measured
+  // and nominal curvature differ by one common factor.
+  const double factor = r.points[0].measuredCurvature / r.points[0].deformation;
+  EXPECT_LT(factor, 1.0);
+  EXPECT_GT(factor, 0.98);
+  for (const ScanPoint& p : r.points) {
+    EXPECT_TRUE(p.converged);
+    EXPECT_NEAR(p.deformation, 2 * units::kPi / (p.rotationOrder * 3 * kBond), 1e-12);
+    EXPECT_NEAR(p.measuredCurvature / p.deformation, factor, 2e-4);
+    EXPECT_EQ(p.cell.symmetry.rotationOrder(), p.rotationOrder);
+  }
+  const double ratio =
+      (r.points[2].energy - r.points[0].energy) / (r.points[1].energy - r.points[0].energy);
+  EXPECT_NEAR(ratio, 5.0, 0.1) << ratio;
 }
