@@ -15,18 +15,20 @@ Command makeBenchDemCommand();
 Command makeBenchEwaldCommand();
 Command makeBenchSccCommand();
 Command makeBenchNetworkCommand();
+Command makeBenchSlidingCommand();
+Command makeBenchZippingCommand();
 Command makeBenchScanCommand();
 Command makeBenchSkgenCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(std::vector<Command>{
       makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-      makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(),
+      makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(), makeBenchSlidingCommand(), makeBenchZippingCommand(),
       makeBenchScanCommand(), makeBenchSkgenCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
     auto* bench = app.add_subcommand(
-        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, scan, skgen");
+        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, sliding, zipping, scan, skgen");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

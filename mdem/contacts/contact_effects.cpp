@@ -78,13 +78,30 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
       typeCount_(static_cast<int>(scene.elementTypes.size())), types_(typeCount_ * typeCount_), nb_(std::move(nb)) {
   std::vector<char> used(typeCount_, 0);
   for (int t : scene.bodies.type) used[t] = 1;
+  bool bricks = false, tubes = false;
+  for (int a = 0; a < typeCount_; ++a) {
+    const ElementType& t = scene.elementTypes[a];
+    width_.push_back(t.width), length_.push_back(t.length);
+    if (!used[a]) continue;
+    (t.shape == Shape::Brick ? bricks : tubes) = true;
+    if (t.shape == Shape::Brick && spec_.edgeWidth >= 0.5 * std::min(t.width, t.length))
+      throw InputError(scene.source, "key vdw_contact.edge_width_nm", fmt::format("{:.4g} nm", spec_.edgeWidth),
+                       fmt::format("less than half the width and length of brick type \"{}\" ({:.4g} nm)", t.name,
+                                   0.5 * std::min(t.width, t.length)));
+  }
+  if (bricks && tubes)
+    throw InputError(scene.source, "key effects", "\"vdw_contact\" between brick and cylinder elements",
+                     "elements of one shape (tube-tube or face-to-face brick contacts; mixed pairs are not implemented)");
+  if (bricks) {
+    FaceContactSpec fs;
+    fs.lj = spec_.lj, fs.layerSpacing = spec_.layerSpacing, fs.edgeWidth = spec_.edgeWidth;
+    fs.switchGap = spec_.switchGap, fs.cutoffGap = spec_.cutoffGap;
+    face_ = std::make_unique<FaceContactModel>(fs);
+    return;
+  }
   for (int a = 0; a < typeCount_; ++a) {
     if (!used[a]) continue;
     const ElementType& ta = scene.elementTypes[a];
-    if (ta.shape != Shape::Cylinder)
-      throw InputError(scene.source, "key effects",
-                       fmt::format("\"vdw_contact\" with elements of brick type \"{}\"", ta.name),
-                       "cylinder elements (the face-to-face contact of bricks is not implemented)");
     for (int b = a; b < typeCount_; ++b) {
       if (!used[b]) continue;
       const ElementType& tb = scene.elementTypes[b];
@@ -99,11 +116,22 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
 }
 
 double VdwContactEffect::interactionRange(const Scene& s) {
-  return 2.0 * maxRadius(s) + s.contacts.vdw.cutoffGap + 2.0 * maxHalfLength(s);
+  double range = 2.0 * maxRadius(s) + s.contacts.vdw.cutoffGap + 2.0 * maxHalfLength(s);
+  // Bricks: a point of a's face within the in-plane half diagonal of its centre, b's face grown by
+  // the edge width, at most t + cutoff from b's mid-plane (face_contact.hpp).
+  const VdwContactSpec& v = s.contacts.vdw;
+  double diagonal = 0.0, grown = 0.0;
+  for (const ElementType& t : s.elementTypes)
+    if (t.shape == Shape::Brick) {
+      diagonal = std::max(diagonal, std::hypot(0.5 * t.width, 0.5 * t.length));
+      grown = std::max(grown, std::hypot(0.5 * t.width + v.edgeWidth, 0.5 * t.length + v.edgeWidth));
+    }
+  if (diagonal > 0.0) range = std::max(range, diagonal + std::hypot(grown, v.layerSpacing + v.cutoffGap));
+  return range;
 }
 
-const TubePairPotential& VdwContactEffect::potential(int a, int b) const {
-  return *types_[std::min(a, b) * typeCount_ + std::max(a, b)].potential;
+const TubePairPotential* VdwContactEffect::potential(int a, int b) const {
+  return types_[std::min(a, b) * typeCount_ + std::max(a, b)].potential.get();
 }
 
 ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
@@ -114,7 +142,10 @@ ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
   const bool iOuter = topo.filament[i] != topo.filament[j] ? topo.filament[i] < topo.filament[j] : i < j;
   const int o = iOuter ? i : j, in = iOuter ? j : i;
   const Segment so = nb_->segment(b, o), si = nb_->imageNear(b, in, so.centre);
-  ContactPairResult r = tp.isotropic ? tp.isotropic->evaluate(so.centre, si.centre)
+  ContactPairResult r =
+      face_ ? face_->evaluate(brickFace(so.centre, b.orientation[o], width_[b.type[o]], length_[b.type[o]]),
+                              brickFace(si.centre, b.orientation[in], width_[b.type[in]], length_[b.type[in]]))
+      : tp.isotropic ? tp.isotropic->evaluate(so.centre, si.centre)
                                      : anisotropicVdw(*tp.potential, rule_, so, si);
   if (!iOuter) std::swap(r.forceA, r.forceB), std::swap(r.torqueA, r.torqueB);
   return r;
@@ -210,11 +241,30 @@ std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, con
     const ElementType& ta = scene.elementTypes[a];
     const double l = ta.length, r = effectiveRadius(ta);
     ContactStabilityTerms& c = terms[a];
-    if (effects.vdw) {
+    if (effects.vdw && effects.vdw->faceModel()) {
+      // Bricks: f''(D) at the minimum of the bilayer energy per area, over the face area A = w L;
+      // tilting about the width / length axes: A L^2/12, A w^2/12; twisting about the normal
+      // moves the edge ramps: |f_min| (perimeter) r^2 / delta with r the half diagonal.
+      const FaceContactModel& m = *effects.vdw->faceModel();
+      double best = 0.0, dEq = 0.0, fMin = 0.0, df;
+      for (double d = 0.5 * m.spec().layerSpacing; d < m.cutoffDistance(); d += 1e-3) {
+        const double f = m.bilayerEnergy(d, &df);
+        if (f < fMin) fMin = f, dEq = d;
+      }
+      const double delta = 1e-3;
+      double up, down;
+      m.bilayerEnergy(dEq + delta, &up), m.bilayerEnergy(dEq - delta, &down);
+      best = (up - down) / (2.0 * delta);
+      const double area = ta.width * ta.length, r2 = 0.25 * (ta.width * ta.width + l * l);
+      c.stiffness = 2.0 * n * best * area;
+      c.rotationalStiffness = Vec3(2.0 * n * std::abs(fMin) * 2.0 * (ta.width + l) * r2 / m.spec().edgeWidth,
+                                   2.0 * n * best * area * l * l / 12.0,
+                                   2.0 * n * best * area * ta.width * ta.width / 12.0);
+    } else if (effects.vdw) {
       double curvature = 0.0;  // largest Phi'' at the minimum over the partner types
       for (int b = 0; b < nt; ++b) {
         if (!used[b]) continue;
-        const TubePairPotential& p = effects.vdw->potential(a, b);
+        const TubePairPotential& p = *effects.vdw->potential(a, b);
         const double d = p.equilibriumDistance(), delta = 1e-3;
         double up, down;
         p.phi(d + delta, &up), p.phi(d - delta, &down);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/face_contact.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/effect.hpp"
@@ -55,7 +56,9 @@ class VdwContactEffect : public Effect {
   Energies energy(const State& state) const override;
   // Largest centre distance at which two elements of the scene interact.
   static double interactionRange(const Scene& scene);
-  const TubePairPotential& potential(int typeA, int typeB) const;
+  // Tube types: the pair potential (null for bricks). Bricks: the face-to-face model (null for tubes).
+  const TubePairPotential* potential(int typeA, int typeB) const;
+  const FaceContactModel* faceModel() const { return face_.get(); }
   double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
   double neighbourSeconds() const { return nb_->seconds; }
   const ContactNeighbourhood& neighbourhood() const { return *nb_; }
@@ -71,6 +74,8 @@ class VdwContactEffect : public Effect {
   QuadratureRule rule_;
   int typeCount_ = 0;
   std::vector<TypePair> types_;  // typeCount^2, symmetric, shared pointers by (min, max)
+  std::unique_ptr<FaceContactModel> face_;  // when the elements are bricks
+  std::vector<double> width_, length_;      // per type
   std::shared_ptr<ContactNeighbourhood> nb_;
   std::vector<ContactPairResult> results_;
 };

@@ -33,6 +33,8 @@ void validateContactSpec(const Scene& s) {
     requireRange(s, "vdw_contact.switch_gap_nm", v.switchGap, 1.5 * v.lj.sigma, 5.0, "nm");
     requireRange(s, "vdw_contact.cutoff_gap_nm", v.cutoffGap, v.switchGap + 0.05, 6.0, "nm");
     requireRange(s, "vdw_contact.quadrature_points", v.quadraturePoints, 2, 64, "");
+    requireRange(s, "vdw_contact.layer_spacing_nm", v.layerSpacing, 0.0, 2.0, "nm");
+    requireRange(s, "vdw_contact.edge_width_nm", v.edgeWidth, 0.05, 5.0, "nm");
   }
   if (listed(s, "contact_damping")) {
     const ContactDampingSpec& d = c.damping;
@@ -110,7 +112,7 @@ void readContactTables(const TomlTable& root, Scene& s) {
   if (root.has("vdw_contact")) {
     const TomlTable t = root.table("vdw_contact");
     t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
-                 "cutoff_gap_nm", "quadrature_points"});
+                 "cutoff_gap_nm", "quadrature_points", "layer_spacing_nm", "edge_width_nm"});
     VdwContactSpec& v = s.contacts.vdw;
     const std::string form = t.string("form", "anisotropic");
     if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
@@ -121,6 +123,8 @@ void readContactTables(const TomlTable& root, Scene& s) {
     v.switchGap = t.number("switch_gap_nm", v.switchGap);
     v.cutoffGap = t.number("cutoff_gap_nm", v.cutoffGap);
     v.quadraturePoints = static_cast<int>(t.integer("quadrature_points", v.quadraturePoints));
+    v.layerSpacing = t.number("layer_spacing_nm", v.layerSpacing);
+    v.edgeWidth = t.number("edge_width_nm", v.edgeWidth);
   }
   if (root.has("contact_damping")) {
     const TomlTable t = root.table("contact_damping");

@@ -30,6 +30,10 @@ struct VdwContactSpec {
   double switchGap = 0.8;       // nm
   double cutoffGap = 1.2;       // nm
   int quadraturePoints = 8;     // Gauss points along the quadrature element (anisotropic form)
+  // Bricks (face-to-face form, face_contact.hpp): spacing of the two graphene layers of a
+  // collapsed tube, and the width of the smooth edge of a face.
+  double layerSpacing = 0.34;   // nm
+  double edgeWidth = 0.6;       // nm
 };
 
 // "contact_damping": a dashpot in parallel with each contact, per unit contact length.

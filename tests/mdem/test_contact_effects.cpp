@@ -256,9 +256,14 @@ TEST(MdemContactEffects, BadParametersAreClearErrors) {
   s.periodic.periodic = {true, false, false};
   s.periodic.length = Vec3(6.0, 0, 0);
   expectError(s, "periodic.length_nm");
-  s = tubeScene({"bonds", "vdw_contact"});
-  s.elementTypes[0].shape = Shape::Brick, s.elementTypes[0].thickness = 0.8, s.elementTypes[0].width = 2.4;
-  expectError(s, "brick");
+  s = tubeScene({"bonds", "vdw_contact"});  // bricks with tubes: not implemented
+  s.elementTypes.push_back(s.elementTypes[0]);
+  s.elementTypes[1].shape = Shape::Brick, s.elementTypes[1].thickness = 0.68, s.elementTypes[1].width = 2.4;
+  s.bodies.add(1, s.elementTypes[1], Vec3(0, 5, 0), Quat{});
+  expectError(s, "brick and cylinder");
+  s = tubeScene({"bonds", "vdw_contact"});  // the smooth edge must fit on the brick face
+  s.elementTypes[0].shape = Shape::Brick, s.elementTypes[0].thickness = 0.68, s.elementTypes[0].width = 1.0;
+  expectError(s, "edge_width_nm");
 }
 
 }  // namespace
