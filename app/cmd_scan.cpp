@@ -9,6 +9,11 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "beam/beam_run.hpp"
+#include "beam/fit_plot.hpp"
+#include "beam/scan_table.hpp"
+#include "common/errors.hpp"
+#include "common/plot/figure.hpp"
 #include "common/units.hpp"
 #include "objective/core/xyz_file.hpp"
 #include "objective/drivers/cell_calculator.hpp"
@@ -23,7 +28,45 @@ struct ScanOptions {
   std::string scanFile;
   bool resume = false;
   int stopAfter = -1;
+  std::string png;  // default: the curve JSON with .png
 };
+
+// PNG of the finished curve read back from its JSON: with the quadratic fit of beam/ (window,
+// stiffness +- uncertainty, residuals; beam/fit_plot.hpp) when the fitter accepts the curve,
+// else the points alone and the fitter's reason on stderr (e.g. too few points so far).
+void writeScanPlot(const std::string& jsonPath, const std::string& pngPath) {
+  const beam::ScanCurve curve = beam::readScanTable(jsonPath);
+  std::string quantity = "C", key = "C_hartree";
+  if (curve.kind == "twist") quantity = "K", key = "K_hartree_per_rad2";
+  if (curve.kind == "bend")
+    quantity = curve.direction == "hard" ? "D_h" : "D_s",
+    key = curve.direction == "hard" ? "D_hard_hartree_bohr2" : "D_soft_hartree_bohr2";
+  try {
+    beam::writeFitPlot(beam::fitScanCurve(curve, quantity, key, 0.02, "auto", false), pngPath);
+    std::cerr << "wrote " << pngPath << " (curve with its quadratic fit)\n";
+    return;
+  } catch (const InputError& e) {
+    std::cerr << "mesochain: note: the plot shows the points without a fit: " << e.what() << "\n";
+  }
+  plot::Figure f(curve.label() + " scan (" + curve.source + ")");
+  f.x.label = curve.deformationUnit == "strain"         ? "strain"
+              : curve.deformationUnit == "rad_per_cell" ? "twist per cell (rad)"
+                                                        : "curvature 1/R (1/Bohr)";
+  f.y.label = "energy per cell - lowest (meV)";
+  std::vector<double> x, y;
+  double lowest = 0.0;
+  for (std::size_t k = 0; k < curve.points.size(); ++k)
+    if (k == 0 || curve.points[k].energy < lowest) lowest = curve.points[k].energy;
+  for (const auto& p : curve.points) {
+    x.push_back(p.deformation);
+    y.push_back((p.energy - lowest) * units::kHartreeInEv * 1000.0);
+  }
+  plot::SeriesStyle dots;
+  dots.marker = plot::Marker::Circle;
+  f.add("scan points", x, y, dots);
+  f.savePng(pngPath);
+  std::cerr << "wrote " << pngPath << "\n";
+}
 
 void printTable(std::ostream& os, const objective::ScanResult& r) {
   const bool bend = r.kind == objective::ScanKind::Bend;
@@ -69,8 +112,11 @@ int runScanCommand(const ScanOptions& o) {
   printTable(std::cout, r);
   objective::writeScanCurve(r, in.jsonPath, in.csvPath);
   std::cerr << "wrote " << in.jsonPath << (in.csvPath.empty() ? "" : " and " + in.csvPath) << "\n";
-  // Hook for PNG plots of the curve: the plot library will be called here with the ScanResult
-  // (energy against deformation, and measured against nominal curvature for bend).
+  if (r.complete) {
+    std::string png = o.png;
+    if (png.empty()) png = std::filesystem::path(in.jsonPath).replace_extension(".png").string();
+    writeScanPlot(in.jsonPath, png);
+  }
   if (!in.structurePrefix.empty())
     for (std::size_t k = 0; k < r.points.size(); ++k) {
       const std::string file = fmt::format("{}-{:03d}.xyz", in.structurePrefix, k);
@@ -103,6 +149,8 @@ Command makeScanCommand() {
                 "continue from the checkpoint of the scan file (refused if the input changed)");
     s->add_option("--stop-after", opts->stopAfter,
                   "compute at most N new points, then stop (resume later with --resume)");
+    s->add_option("--png", opts->png,
+                  "PNG of the finished curve with its fit (default: the curve JSON with .png)");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

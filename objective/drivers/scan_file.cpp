@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 #include "common/units.hpp"
 #include "objective/core/toml_table.hpp"
 
@@ -50,18 +51,8 @@ std::string identityOf(const CellInput& cell) {
 ScanInput readScanFile(const std::string& path) {
   ScanInput in;
   in.source = path;
+  const toml::value data = parseTomlFile(path, "scan file");
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw InputError(path, "the scan file does not exist or is not a regular file");
-  toml::value data;
-  try {
-    data = toml::parse(path);
-  } catch (const toml::syntax_error& e) {
-    throw InputError(path, fmt::format("line {}", e.location().line()), "invalid TOML",
-                     std::string("valid TOML (") + e.what() + ")");
-  } catch (const std::exception& e) {
-    throw InputError(path, std::string("the file cannot be read as TOML: ") + e.what());
-  }
   const TomlTable root(path, data, "");
   root.allowOnly({"format", "cell", "kind", "strains", "twist_deg_per_cell", "rotation_orders",
                   "direction", "ring_angular", "relax", "dimensions", "output"});
