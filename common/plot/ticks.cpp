@@ -18,6 +18,17 @@ double niceStep(double raw) {
 
 std::string formatTick(double value, double step) {
   if (std::abs(value) < 1e-9 * step) return "0";
+  // Plain decimals for magnitudes people read at a glance (40, 2000, 0.005); the exponent form
+  // only outside [1e-3, 1e5) where plain digits get long.
+  if (std::abs(value) >= 1e-3 && std::abs(value) < 1e5 && step >= 1e-4) {
+    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    std::string plain = fmt::format("{:.{}f}", value, decimals);
+    if (plain.find('.') != std::string::npos) {  // 1.0 -> 1, 2.50 -> 2.5
+      plain.erase(plain.find_last_not_of('0') + 1);
+      if (plain.back() == '.') plain.pop_back();
+    }
+    return plain;
+  }
   const int digits =
       static_cast<int>(std::floor(std::log10(std::abs(value))) - std::floor(std::log10(step) + 1e-9)) + 1;
   std::string s = fmt::format("{:.{}g}", value, std::clamp(digits, 1, 15));

@@ -56,6 +56,13 @@ TEST(PlotTicks, LargeAndSmallValuesUseShortExponents) {
   const std::vector<std::string> labels{"0", "5e5", "1e6", "1.5e6", "2e6", "2.5e6", "3e6"};
   EXPECT_EQ(t.labels, labels);
   EXPECT_EQ(formatTick(2.5e-7, 5e-8), "2.5e-7");
+  // Round magnitudes between 1e-3 and 1e5 are written out, not as 4e1 or 2e3.
+  EXPECT_EQ(formatTick(40.0, 20.0), "40");
+  EXPECT_EQ(formatTick(-2000.0, 1000.0), "-2000");
+  EXPECT_EQ(formatTick(0.005, 0.005), "0.005");
+  EXPECT_EQ(formatTick(2e6, 1e6), "2e6");
+  EXPECT_EQ(formatTick(1.0, 0.5), "1");
+  EXPECT_EQ(formatTick(2.5, 0.5), "2.5");
 }
 
 TEST(PlotTicks, ConstantDataGetsARangeAroundIt) {
