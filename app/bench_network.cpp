@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "app/bench_network_lammps.hpp"
 #include "app/commands.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"
@@ -24,9 +25,12 @@ struct NetworkBenchOptions {
   int tubeLength = 25;
   int threads = 2;
   double seconds = 3.0;
+  long steps = 0;       // > 0: fixed step count instead of --seconds (callgrind)
+  bool isotropic = false;
+  std::string lammps;   // prefix of the LAMMPS export (then nothing is timed)
 };
 
-mdem::Scene networkScene(int total, int perTube) {
+mdem::Scene networkScene(int total, int perTube, bool isotropic) {
   mdem::Scene s;
   mdem::ElementType t;
   t.name = "cnt1010", t.shape = mdem::Shape::Cylinder, t.radius = 0.678, t.length = 2.0, t.mass = 325 * 1.9945e-5;
@@ -42,6 +46,7 @@ mdem::Scene networkScene(int total, int perTube) {
   n.waviness = 0.1, n.seed = 7;
   mdem::generateNetwork(s, n);
   s.contacts.vdw.lj = {2.84e-3 * mdem::units::kElectronvolt, 0.34, 38.2};
+  s.contacts.vdw.anisotropic = !isotropic;
   s.contacts.damping.translational = 1.0;
   s.effects = {"bonds", "vdw_contact", "contact_damping", "local_damping"};
   s.run.timeStepFraction = 0.3;
@@ -53,7 +58,7 @@ struct Measurement {
   long pairs = 0;
 };
 
-Measurement measure(const mdem::Scene& scene, double seconds) {
+Measurement measure(const mdem::Scene& scene, double seconds, long fixedSteps) {
   mdem::Simulation sim(scene);
   sim.run(5);  // warm-up
   auto* vdw = dynamic_cast<mdem::VdwContactEffect*>(sim.effect("vdw_contact"));
@@ -62,7 +67,7 @@ Measurement measure(const mdem::Scene& scene, double seconds) {
   long steps = 0;
   const auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0.0;
-  while (elapsed < seconds) {
+  while (fixedSteps > 0 ? steps < fixedSteps : elapsed < seconds) {
     sim.run(5);
     steps += 5;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -86,15 +91,30 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--tube-length", opt->tubeLength, "elements per tube");
     (*sub)->add_option("--threads", opt->threads, "OpenMP threads of the parallel run");
     (*sub)->add_option("--seconds", opt->seconds, "time per measurement");
+    (*sub)->add_option("--steps", opt->steps, "fixed number of steps per measurement (multiple of 5; for callgrind)");
+    (*sub)->add_flag("--isotropic", opt->isotropic, "isotropic (central) contact form instead of the anisotropic one");
+    (*sub)->add_option("--lammps", opt->lammps,
+                       "write PREFIX-<elements>.data/.table/.settings for bench/lammps/in.network and exit");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
+    if (!opt->lammps.empty()) {
+      for (int total : opt->totals) {
+        const mdem::Scene s = networkScene(total, opt->tubeLength, true);
+        const mdem::Simulation sim(s);
+        const std::string prefix = fmt::format("{}-{}", opt->lammps, s.bodies.size());
+        writeLammpsNetwork(s, sim.timeStep(), prefix);
+        std::cout << fmt::format("{}.data, .table, .settings: {} elements, time step {:.4g} ns\n", prefix,
+                                 s.bodies.size(), sim.timeStep());
+      }
+      return 0;
+    }
     std::cout << "elements  tubes  pairs     threads  element-steps/s  neighbour-search  contact-forces\n";
     for (int total : opt->totals) {
-      const mdem::Scene s = networkScene(total, opt->tubeLength);
+      const mdem::Scene s = networkScene(total, opt->tubeLength, opt->isotropic);
       for (int threads : {1, opt->threads}) {
         omp_set_num_threads(threads);
-        const Measurement m = measure(s, opt->seconds);
+        const Measurement m = measure(s, opt->seconds, opt->steps);
         std::cout << fmt::format("{:8d}  {:5d}  {:8d}  {:7d}  {:15.4g}  {:15.1f}%  {:13.1f}%\n", s.bodies.size(),
                                  total / opt->tubeLength, m.pairs, threads, m.rate, 100 * m.neighbourShare,
                                  100 * m.contactShare)

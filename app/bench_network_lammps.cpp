@@ -1,0 +1,144 @@
+// `mesochain bench network --lammps PREFIX`: writes the benchmark network as the input of its
+// LAMMPS peer (bench/lammps/in.network, README.md there): point particles at the element centres
+// (one per element, element mass), harmonic bonds along each tube and harmonic angles at each
+// inner element, and a pair table U(r) between elements, the isotropic form of mesochain's
+// tube-tube potential (vdw_contact.hpp: two parallel elements side by side at centre distance r).
+// LAMMPS "units nano" are nm, ag, ns, ag nm^2/ns^2 = zJ: the mDEM units (docs/mdem-units.md), so
+// every number is written as is.
+#include "app/bench_network_lammps.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/scene.hpp"
+#include "mdem/units.hpp"
+
+namespace mesochain::app {
+
+namespace {
+std::ofstream openOut(const std::string& path) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  return f;
+}
+
+// Types keyed by a rounded rest value (bond length to 1e-4 nm, angle to 0.01 degree), so a wavy
+// tube keeps its rest shape with a modest number of LAMMPS types.
+struct RestTypes {
+  double quantum;
+  std::map<long, int> index;
+  std::vector<double> rest;
+  int of(double value) {
+    const long key = std::lround(value / quantum);
+    auto [it, added] = index.emplace(key, static_cast<int>(rest.size()) + 1);
+    if (added) rest.push_back(key * quantum);
+    return it->second;
+  }
+};
+}  // namespace
+
+void writeLammpsNetwork(const mdem::Scene& scene, double timeStep, const std::string& prefix) {
+  const mdem::Bodies& b = scene.bodies;
+  const int n = b.size();
+  const mdem::ElementType& type = scene.elementTypes.at(0);
+  for (int i = 0; i < n; ++i)
+    if (b.type[i] != 0) throw std::runtime_error("LAMMPS export: networks of one element type only");
+
+  // Bonded neighbours along the tubes; molecules = tubes (a new one where no bond joins i-1, i).
+  std::vector<std::vector<int>> neighbours(n);
+  for (const mdem::Bond& bond : scene.bonds) neighbours[bond.a].push_back(bond.b), neighbours[bond.b].push_back(bond.a);
+  std::vector<int> molecule(n, 0);
+  int tubes = 0;
+  for (int i = 0; i < n; ++i) {
+    bool joined = false;
+    for (int j : neighbours[i]) joined = joined || j == i - 1;
+    molecule[i] = joined ? molecule[i - 1] : ++tubes;
+  }
+
+  // Stiffness of the parallel bond (parallel_bond.hpp) mapped onto point particles:
+  //   stretching 1/2 k_n A (r - r0)^2    -> bond_style harmonic K = k_n A / 2,
+  //   bending    1/2 k_n I theta^2       -> angle_style harmonic K = k_n I / 2, theta = pi - angle.
+  RestTypes bondTypes{1e-4, {}, {}}, angleTypes{1e-2, {}, {}};
+  std::vector<double> bondK, angleK;
+  struct Term {
+    int type, i, j, k;
+  };
+  std::vector<Term> bonds, angles;
+  for (const mdem::Bond& bond : scene.bonds) {
+    const int t = bondTypes.of(bond.restLength);
+    if (t > static_cast<int>(bondK.size())) bondK.push_back(0.5 * bond.k.kn * bond.section.area);
+    bonds.push_back({t, bond.a + 1, bond.b + 1, 0});
+  }
+  const mdem::Bond& first = scene.bonds.at(0);
+  const double bendK = 0.5 * first.k.kn * first.section.ix;
+  for (int i = 0; i < n; ++i) {
+    if (neighbours[i].size() != 2) continue;
+    const int a = neighbours[i][0], c = neighbours[i][1];
+    const mdem::Vec3 u = b.position[a] - b.position[i], v = b.position[c] - b.position[i];
+    const double angle = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / mdem::units::kPi;
+    angles.push_back({angleTypes.of(angle), a + 1, i + 1, c + 1});
+  }
+
+  mdem::Vec3 lo = b.position[0], hi = b.position[0];
+  for (const mdem::Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  lo.array() -= 5.0, hi.array() += 5.0;
+
+  std::ofstream d = openOut(prefix + ".data");
+  d << "LAMMPS data file: mesochain bench network, " << n << " elements (bench/lammps/README.md)\n\n";
+  d << fmt::format("{} atoms\n{} bonds\n{} angles\n1 atom types\n{} bond types\n{} angle types\n\n", n, bonds.size(),
+                   angles.size(), bondTypes.rest.size(), angleTypes.rest.size());
+  for (int k = 0; k < 3; ++k) d << fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
+  d << fmt::format("\nMasses\n\n1 {:.10g}\n\nAtoms # molecular\n\n", type.mass);
+  for (int i = 0; i < n; ++i)
+    d << fmt::format("{} {} 1 {:.9f} {:.9f} {:.9f}\n", i + 1, molecule[i], b.position[i].x(), b.position[i].y(),
+                     b.position[i].z());
+  d << "\nVelocities\n\n";
+  for (int i = 0; i < n; ++i)
+    d << fmt::format("{} {:.9g} {:.9g} {:.9g}\n", i + 1, b.velocity[i].x(), b.velocity[i].y(), b.velocity[i].z());
+  d << "\nBonds\n\n";
+  for (std::size_t k = 0; k < bonds.size(); ++k)
+    d << fmt::format("{} {} {} {}\n", k + 1, bonds[k].type, bonds[k].i, bonds[k].j);
+  d << "\nAngles\n\n";
+  for (std::size_t k = 0; k < angles.size(); ++k)
+    d << fmt::format("{} {} {} {} {}\n", k + 1, angles[k].type, angles[k].i, angles[k].j, angles[k].k);
+
+  // U(r): two elements parallel and side by side (the isotropic form of the contact).
+  mdem::TubePairSpec ps;
+  ps.lj = scene.contacts.vdw.lj, ps.radiusA = ps.radiusB = type.radius;
+  ps.switchGap = scene.contacts.vdw.switchGap, ps.cutoffGap = scene.contacts.vdw.cutoffGap;
+  const mdem::TubePairPotential potential(ps);
+  const mdem::IsotropicVdw isotropic(potential, 0.5 * type.length, 0.5 * type.length);
+  const double rc = isotropic.cutoff(), r0 = 0.5;
+  const int points = 2000;
+  std::ofstream t = openOut(prefix + ".table");
+  t << "# mesochain tube-tube contact, isotropic form U(r) between two " << type.length << " nm elements of radius "
+    << type.radius << " nm; r nm, U zJ, F = -dU/dr pN\n\nVDW\n";
+  t << fmt::format("N {} R {:.6f} {:.6f}\n\n", points, r0, rc);
+  for (int k = 0; k < points; ++k) {
+    const double r = r0 + (rc - r0) * k / (points - 1);
+    double du = 0.0;
+    const double u = isotropic.energy(r, &du);
+    t << fmt::format("{} {:.9f} {:.12g} {:.12g}\n", k + 1, r, u, -du);
+  }
+
+  std::ofstream s = openOut(prefix + ".settings");
+  s << "# mesochain bench network: coefficients and time step (written by `mesochain bench network --lammps`)\n";
+  for (std::size_t k = 0; k < bondTypes.rest.size(); ++k)
+    s << fmt::format("bond_coeff {} {:.9g} {:.6f}\n", k + 1, bondK[k], bondTypes.rest[k]);
+  for (std::size_t k = 0; k < angleTypes.rest.size(); ++k)
+    s << fmt::format("angle_coeff {} {:.9g} {:.4f}\n", k + 1, bendK, angleTypes.rest[k]);
+  // The table file is looked up from LAMMPS's working directory: name it without the folder.
+  const std::string tableName = prefix.substr(prefix.find_last_of('/') + 1) + ".table";
+  s << fmt::format("pair_coeff 1 1 {} VDW {:.6f}\n", tableName, rc);
+  s << fmt::format("neighbor {} bin\n", scene.contacts.skin);
+  s << fmt::format("timestep {:.9g}\n", timeStep);
+}
+
+}  // namespace mesochain::app
