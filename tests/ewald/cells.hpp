@@ -1,14 +1,25 @@
 #pragma once
 // Small objective cells for the Ewald tests (Bohr): charged sites at several radii, one on the
 // screw axis.
+#include <optional>
 #include <vector>
 
+#include "ewald/helical_lattice_sum.hpp"
 #include "objective/core/cell.hpp"
 
 namespace ewaldtest {
 
 using mesochain::objective::ObjectiveCell;
 using mesochain::objective::Symmetry;
+
+// The lattice-sum matrix of `cell` at tolerance `tol` (splitting parameter `alpha` if given).
+inline Eigen::MatrixXd phi(mesochain::ewald::Kernel k, const ObjectiveCell& cell, double tol = 1e-12,
+                           std::optional<double> alpha = std::nullopt) {
+  mesochain::ewald::LatticeSumSettings st;
+  st.tolerance = tol;
+  st.splitting = alpha;
+  return mesochain::ewald::HelicalLatticeSum(k, st).matrix(cell);
+}
 
 inline ObjectiveCell sampleCell(const Symmetry& s) {
   // N_a > 1 maps an axis site onto itself: keep the third site off the axis then.

@@ -19,15 +19,9 @@ using objective::GroupElement;
 using objective::ObjectiveCell;
 using objective::Symmetry;
 
-namespace {
+using ewaldtest::phi;
 
-Eigen::MatrixXd phi(Kernel k, const ObjectiveCell& cell, double tol = 1e-12,
-                    std::optional<double> alpha = std::nullopt) {
-  LatticeSumSettings st;
-  st.tolerance = tol;
-  st.splitting = alpha;
-  return HelicalLatticeSum(k, st).matrix(cell);
-}
+namespace {
 
 double scaleOf(const Eigen::MatrixXd& m) { return m.cwiseAbs().maxCoeff(); }
 

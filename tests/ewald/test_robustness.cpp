@@ -22,15 +22,9 @@ using objective::GroupElement;
 using objective::ObjectiveCell;
 using objective::Symmetry;
 
-namespace {
+using ewaldtest::phi;
 
-Eigen::MatrixXd phi(Kernel k, const ObjectiveCell& cell, double tol = 1e-12,
-                    std::optional<double> alpha = std::nullopt) {
-  LatticeSumSettings st;
-  st.tolerance = tol;
-  st.splitting = alpha;
-  return HelicalLatticeSum(k, st).matrix(cell);
-}
+namespace {
 
 double maxRelative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& ref) {
   return (a - ref).cwiseAbs().maxCoeff() / ref.cwiseAbs().maxCoeff();
