@@ -5,6 +5,8 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -27,6 +29,7 @@ struct NetworkBenchOptions {
   double seconds = 3.0;
   long steps = 0;       // > 0: fixed step count instead of --seconds (callgrind)
   bool isotropic = false;
+  bool effectsCost = false;  // also: the same network with fewer named effects (1 thread)
   std::string lammps;   // prefix of the LAMMPS export (then nothing is timed)
 };
 
@@ -79,6 +82,43 @@ Measurement measure(const mdem::Scene& scene, double seconds, long fixedSteps) {
   m.pairs = vdw->pairCount();
   return m;
 }
+// Element-steps per second of wall time of any scene (no effect required).
+double stepRate(const mdem::Scene& scene, double seconds) {
+  mdem::Simulation sim(scene);
+  sim.run(5);
+  long steps = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  double elapsed = 0.0;
+  while (elapsed < seconds) {
+    sim.run(5);
+    steps += 5;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return static_cast<double>(steps) * scene.bodies.size() / elapsed;
+}
+
+// The promise "an effect not named costs nothing" measured: the same network (same bodies and
+// bonds) with the contact effects named or not. A scene that does not name them builds no
+// neighbour list and no contact loop, so it runs at the bonded-chain rate of `bench dem`.
+void printEffectsCost(const NetworkBenchOptions& o) {
+  omp_set_num_threads(1);
+  mdem::Scene s = networkScene(o.totals.front(), o.tubeLength, o.isotropic);
+  const std::vector<std::vector<std::string>> lists{{"bonds", "local_damping"},
+                                                    {"bonds", "vdw_contact", "local_damping"},
+                                                    {"bonds", "vdw_contact", "contact_damping", "local_damping"}};
+  std::cout << fmt::format("\nthe same {} elements with fewer named effects, 1 thread:\n", s.bodies.size());
+  double base = 0.0;
+  for (const auto& list : lists) {
+    s.effects = list;
+    const double rate = stepRate(s, o.seconds);
+    if (base == 0.0) base = rate;
+    std::string names;
+    for (const auto& e : list) names += (names.empty() ? "" : " + ") + e;
+    std::cout << fmt::format("  {:<52s} {:10.4g} element-steps/s  ({:.2f} of the first)\n", names, rate,
+                             rate / base)
+              << std::flush;
+  }
+}
 }  // namespace
 
 Command makeBenchNetworkCommand() {
@@ -93,6 +133,8 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--seconds", opt->seconds, "time per measurement");
     (*sub)->add_option("--steps", opt->steps, "fixed number of steps per measurement (multiple of 5; for callgrind)");
     (*sub)->add_flag("--isotropic", opt->isotropic, "isotropic (central) contact form instead of the anisotropic one");
+    (*sub)->add_flag("--effects-cost", opt->effectsCost,
+                     "also time the same network without the contact effects named (1 thread)");
     (*sub)->add_option("--lammps", opt->lammps,
                        "write PREFIX-<elements>.data/.table/.settings for bench/lammps/in.network and exit");
   };
@@ -121,6 +163,7 @@ Command makeBenchNetworkCommand() {
                   << std::flush;
       }
     }
+    if (opt->effectsCost) printEffectsCost(*opt);
     return 0;
   };
   return c;
