@@ -53,9 +53,7 @@ GenGeometry readGen(std::istream& in, const std::string& source) {
   GenGeometry out;
   const TextLine head = r.expect("the number of atoms and the type (C, S, F or H)", true);
   r.requireFields(head, 2, "the number of atoms and the type (C, S, F or H)");
-  const long natoms = r.integer(head, 0, "a positive number of atoms");
-  if (natoms < 1 || natoms > 100000000L)
-    r.fail(head, std::to_string(natoms) + " atoms", "a positive number of atoms");
+  const long natoms = r.atomCount(head, 0);
   const std::string t = head.tokens[1];
   const char type = t.size() == 1 ? static_cast<char>(std::toupper(t[0])) : '?';
   switch (type) {

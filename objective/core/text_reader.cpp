@@ -119,6 +119,12 @@ long TextReader::integer(const TextLine& line, std::size_t index, const std::str
   return v;
 }
 
+long TextReader::atomCount(const TextLine& line, std::size_t index) const {
+  const long n = integer(line, index, "a positive number of atoms");
+  if (n < 1 || n > 100000000L) fail(line, std::to_string(n) + " atoms", "a positive number of atoms");
+  return n;
+}
+
 void TextReader::requireFields(const TextLine& line, std::size_t count, const std::string& what,
                                bool exact) const {
   const std::size_t n = line.tokens.size();

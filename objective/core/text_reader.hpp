@@ -38,6 +38,8 @@ class TextReader {
   // Field `index` (0-based) of the line as a finite real number / an integer.
   double real(const TextLine& line, std::size_t index, const std::string& what) const;
   long integer(const TextLine& line, std::size_t index, const std::string& what) const;
+  // Field `index` as the atom count of a structure file: an integer from 1 to 10^8.
+  long atomCount(const TextLine& line, std::size_t index) const;
   // Throws unless the line has exactly `count` fields (or at least `count` when !exact).
   void requireFields(const TextLine& line, std::size_t count, const std::string& what,
                      bool exact = true) const;

@@ -140,9 +140,7 @@ XyzFrame readXyz(std::istream& in, const std::string& source) {
   XyzFrame out;
   const TextLine head = r.expect("the number of atoms", false);
   r.requireFields(head, 1, "the number of atoms");
-  const long natoms = r.integer(head, 0, "a positive number of atoms");
-  if (natoms < 1 || natoms > 100000000L)
-    r.fail(head, std::to_string(natoms) + " atoms", "a positive number of atoms");
+  const long natoms = r.atomCount(head, 0);
   TextLine comment;
   if (!r.nextRaw(comment))
     throw InputError(source, fmt::format("line {}", head.number + 1), "the end of the file",

@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "contact_fixture.hpp"
+#include "momentum.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/integrator.hpp"
 
@@ -18,6 +19,8 @@ namespace mesochain::mdem {
 namespace {
 
 using namespace testing;
+using test_support::angularMomentum;
+using test_support::linearMomentum;
 
 TEST(MdemContactEffects, BuiltOnlyWhenNamed) {
   {
@@ -155,17 +158,6 @@ double crossingAngle(const Bodies& b, int n) {
   return std::acos(std::min(1.0, std::abs(ta.normalized().dot(tb.normalized()))));
 }
 
-Vec3 momentum(const Bodies& b) {
-  Vec3 p = Vec3::Zero();
-  for (int i = 0; i < b.size(); ++i) p += b.mass[i] * b.velocity[i];
-  return p;
-}
-Vec3 angularMomentum(const Bodies& b) {
-  Vec3 l = Vec3::Zero();
-  for (int i = 0; i < b.size(); ++i)
-    l += b.mass[i] * b.position[i].cross(b.velocity[i]) + rotate(b.orientation[i], b.angularMomentumBody[i]);
-  return l;
-}
 
 TEST(MdemContactEffects, CrossedTubesZipConservingEnergyAndMomentum) {
   Simulation sim(crossedTubes(0.7854, Mat3::Identity(), {"bonds", "vdw_contact"}));
@@ -184,7 +176,7 @@ TEST(MdemContactEffects, CrossedTubesZipConservingEnergyAndMomentum) {
   // Verlet's energy error ~ (h omega)^2/8 of the energy exchanged; bound 1 % of it.
   EXPECT_LT(maxDev, 0.01 * released);
   const double pScale = std::sqrt(2.0 * released * 16 * sim.bodies().mass[0]);
-  EXPECT_LT(momentum(sim.bodies()).norm(), 1e-9 * pScale);
+  EXPECT_LT(linearMomentum(sim.bodies()).norm(), 1e-9 * pScale);
   EXPECT_LT(angularMomentum(sim.bodies()).norm(), 1e-8 * pScale * 10.0);
   EXPECT_LT(crossingAngle(sim.bodies(), 8), 0.7854);
 }

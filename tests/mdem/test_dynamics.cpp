@@ -8,11 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "chain_fixture.hpp"
+#include "momentum.hpp"
 
 namespace mesochain::mdem {
 namespace {
 
 using namespace testing;
+using test_support::angularMomentum;
+using test_support::linearMomentum;
 
 // Random velocities of a given scale (nm/ns, rad/ns), reproducible.
 void randomVelocities(Scene& s, double v, double w, unsigned seed, const Mat3& frame = Mat3::Identity()) {
@@ -22,19 +25,6 @@ void randomVelocities(Scene& s, double v, double w, unsigned seed, const Mat3& f
     s.bodies.velocity[i] = frame * (v * Vec3(u(gen), u(gen), u(gen)));
     s.bodies.setAngularVelocityWorld(i, frame * (w * Vec3(u(gen), u(gen), u(gen))));
   }
-}
-
-Vec3 linearMomentum(const Bodies& b) {
-  Vec3 p = Vec3::Zero();
-  for (int i = 0; i < b.size(); ++i) p += b.mass[i] * b.velocity[i];
-  return p;
-}
-
-Vec3 angularMomentum(const Bodies& b) {
-  Vec3 l = Vec3::Zero();
-  for (int i = 0; i < b.size(); ++i)
-    l += b.mass[i] * b.position[i].cross(b.velocity[i]) + rotate(b.orientation[i], b.angularMomentumBody[i]);
-  return l;
 }
 
 TEST(MdemDynamics, UndampedEnergyConservedOver1e5Steps) {
