@@ -35,13 +35,16 @@ std::string relativeTo(const std::string& scanFile, const std::string& path) {
   return (fs::path(scanFile).parent_path() / path).lexically_normal().string();
 }
 
-// The parameter tables by content size and path: part of the input hash, so a checkpoint made
-// with other tables is refused.
+// The parameter tables by element pair and content: part of the input hash, so a checkpoint
+// made with other tables is refused, while the same tables at another path (a moved or
+// re-cloned project, another build) are accepted.
 std::string identityOf(const CellInput& cell) {
   std::string s;
   for (const auto& [pair, file] : cell.parameterFiles) {
-    std::error_code ec;
-    s += fmt::format("table {} {} {}\n", pair, file, fs::file_size(file, ec));
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream content;
+    content << in.rdbuf();
+    s += fmt::format("table {} {}\n", pair, content.str());
   }
   return s;
 }

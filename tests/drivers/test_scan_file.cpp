@@ -75,6 +75,32 @@ TEST(ScanFile, ReadsTwistAndBendWithUnits) {
   EXPECT_TRUE(b.settings.checkpointPath.empty());
 }
 
+// The input hash of a checkpoint knows the parameter tables by content: the same table at
+// another path (a moved project, another build tree) keeps the identity, another table does not.
+TEST(ScanFile, TableIdentityIsTheContentNotThePath) {
+  const std::string skf = std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/C-C.skf";
+  std::filesystem::create_directories(kDir + "/a");
+  std::filesystem::create_directories(kDir + "/b");
+  std::filesystem::copy_file(skf, kDir + "/a/C-C.skf",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(skf, kDir + "/b/C-C.skf",
+                             std::filesystem::copy_options::overwrite_existing);
+  const auto identity = [&](const std::string& sub) {
+    write(sub + "/cell.toml",
+          "format = 1\n[builder]\ntype = \"nanotube\"\nn = 5\nm = 5\ncell = \"helical\"\n"
+          "[kpoints]\nhelical = 8\n[electrons]\ntemperature = 300\n[parameters]\n"
+          "\"C-C\" = \"C-C.skf\"\n");
+    const std::string scan = write(sub + "/scan.toml",
+                                   "format = 1\ncell = \"cell.toml\"\nkind = \"stretch\"\n"
+                                   "strains = [0.01]\n[output]\njson = \"s.json\"\n");
+    return readScanFile(scan).settings.identity;
+  };
+  const std::string a = identity("a");
+  EXPECT_EQ(a, identity("b"));
+  std::ofstream(kDir + "/b/C-C.skf", std::ios::app) << "\n";  // one byte more
+  EXPECT_NE(a, identity("b"));
+}
+
 TEST(ScanFile, BadInputNamesFileAndKey) {
   writeCells();
   const std::string head = "format = 1\ncell = \"helical.toml\"\n";
