@@ -1,5 +1,7 @@
 // `mesochain scan SCAN.toml [--resume] [--stop-after N]`: a deformation scan (stretch, twist
 // or bend) of an objective cell, written as a curve JSON and CSV (docs/scan-file.md).
+#include <algorithm>
+#include <limits>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -70,9 +72,19 @@ void writeScanPlot(const std::string& jsonPath, const std::string& pngPath) {
 
 void printTable(std::ostream& os, const objective::ScanResult& r) {
   const bool bend = r.kind == objective::ScanKind::Bend;
-  double e0 = 0;
+  // E0: the straight reference (deformation 0); a sector scan (bent graphene) has none, and
+  // its energies are shown relative to the least-bent ring instead.
+  double e0 = std::numeric_limits<double>::quiet_NaN();
   for (const auto& p : r.points)
     if (p.deformation == 0.0) e0 = p.energy * r.cellsPerSlice;
+  const bool straightReference = !std::isnan(e0);
+  if (!straightReference && !r.points.empty()) {
+    const auto least = std::min_element(
+        r.points.begin(), r.points.end(), [](const auto& a, const auto& b) {
+          return std::abs(a.deformation) < std::abs(b.deformation);
+        });
+    e0 = least->energy * r.cellsPerSlice;
+  }
   os << fmt::format("scan {}{}: T0 = {:.6f} Bohr, {} atoms per cell, {} cell(s) per slice of "
                     "length T0 (energies per slice)\n",
                     objective::scanKindName(r.kind),
@@ -84,7 +96,7 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
                       r.width * units::kBohrInAngstrom);
   os << fmt::format("{:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
                     std::string("deformation[") + objective::deformationUnit(r.kind) + "]",
-                    "energy [Ha/slice]", "E - E0 [Ha]", "conv", "max|F|", "time[s]", "evals",
+                    "energy [Ha/slice]", straightReference ? "E - E0 [Ha]" : "E - Eleast [Ha]", "conv", "max|F|", "time[s]", "evals",
                     "k x mu", bend ? "  measured 1/R" : "");
   for (const auto& p : r.points) {
     os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
