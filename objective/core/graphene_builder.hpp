@@ -9,10 +9,10 @@
 // perpendicular to C with |T| = sqrt3 |C| / d_R (White, Robertson & Mintmire, PRB 47, 5485
 // (1993)). One sheet cell is the parallelogram C x T with 4 (n^2+nm+m^2)/d_R atoms (4 for
 // zigzag and armchair, 28 for (2, 1)). A sheet point r has arc coordinate r.C/|C| and axial
-// coordinate (C x r)/|C|, the handedness of the nanotube roll-up. The sublattice at the
-// origin is the one whose bond along the sheet's armchair direction a1 + a2 points towards
-// -(a1 + a2): atoms at 0 and 2 (a1 + a2)/3 (for zigzag and armchair this is the rectangle
-// (0, 0), (a/2, b/2), (a/2, 3b/2), (0, 2b), with x the zigzag and y the armchair direction).
+// coordinate (C x r)/|C|, the handedness of the nanotube roll-up. Sheet atoms at 0 and
+// 2 (a1 + a2)/3 (the nanotube builder's sheet moved by -(a1 + a2)/3), so that zigzag and
+// armchair give the rectangle cell (0, 0), (a/2, b/2), (a/2, 3b/2), (0, 2b) (x zigzag, y
+// armchair, b the bond) with its arc and axial coordinates unchanged.
 // Bernal (AB) stacking shifts every second layer by one bond length along the armchair
 // direction, the sheet vector (a1 + a2)/3 for every chiral direction (its atoms then sit over
 // atoms and hexagon centres of the layer below), wrapped into the cell.

@@ -50,7 +50,6 @@ bool contains(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& p,
   return false;
 }
 
-long gcd3(long a, long b) { return std::gcd(a, b); }
 }  // namespace
 
 // The cell of the old rectangle construction (x zigzag, y armchair, 4 atoms; Bernal shift of
@@ -96,7 +95,7 @@ TEST(GrapheneChiral, ZigzagAndArmchairAreTheRectangleCells) {
 TEST(GrapheneChiral, SheetCellIsTheParallelogramCxT) {
   const int cases[][2] = {{1, 0}, {1, 1}, {2, 1}, {3, 1}, {3, 2}, {4, 1}, {5, 2}, {4, 4}, {6, 3}, {7, 0}};
   for (const auto& nm : cases) {
-    const long g = gcd3(nm[0], nm[1]), n = nm[0] / g, m = nm[1] / g;
+    const long g = std::gcd(nm[0], nm[1]), n = nm[0] / g, m = nm[1] / g;
     const long dr = std::gcd(2 * n + m, 2 * m + n);
     const Eigen::Vector2d ch = n * kA1 + m * kA2;
     const Eigen::Vector2d t = ((2 * m + n) / dr) * kA1 - ((2 * n + m) / dr) * kA2;
