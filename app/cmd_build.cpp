@@ -4,6 +4,7 @@
 // AB-stacked graphene stack (one sector of a ring); atoms inline, symmetry, k-points, task.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -44,6 +45,7 @@ struct MultiWallOptions {
 struct RingOptions {
   int layers = 0;
   std::string direction;
+  std::string chiral;  // "n,m" with direction = chiral
   int rotationOrder = 0;
   int cellsAlongArc = 1;
   double interlayer = 3.35;  // Å
@@ -111,14 +113,28 @@ int buildMultiWall(const MultiWallOptions& w, const CommonOptions& o) {
 }
 
 int buildRing(const RingOptions& r, const CommonOptions& o) {
-  return writeBuilt(objective::buildGrapheneRingSector(
-                        r.layers, r.direction == "armchair" ? objective::Direction::Armchair
-                                                            : objective::Direction::Zigzag,
-                        r.rotationOrder, r.cellsAlongArc, r.interlayer * units::kAngstromInBohr,
-                        o.bond * units::kAngstromInBohr),
-                    o, fmt::format("ring{}L-{}-{}.toml", r.layers, r.direction, r.rotationOrder),
+  objective::ChiralIndices dir = objective::chiralIndices(
+      r.direction == "armchair" ? objective::Direction::Armchair : objective::Direction::Zigzag);
+  std::string name = r.direction;
+  if (r.direction == "chiral") {
+    char comma = 0, rest = 0;
+    if (r.chiral.empty())
+      throw InputError("<command line>", "build graphene-ring --chiral", "nothing",
+                       "--chiral n,m with --direction chiral (e.g. 2,1)");
+    if (std::sscanf(r.chiral.c_str(), "%d%c%d%c", &dir.n, &comma, &dir.m, &rest) != 3 || comma != ',')
+      throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",
+                       "chiral indices written n,m (e.g. 2,1)");
+    name = fmt::format("{}-{}", dir.n, dir.m);
+  } else if (!r.chiral.empty()) {
+    throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",
+                     "--chiral only with --direction chiral");
+  }
+  return writeBuilt(objective::buildGrapheneRingSector(r.layers, dir, r.rotationOrder, r.cellsAlongArc,
+                                                       r.interlayer * units::kAngstromInBohr,
+                                                       o.bond * units::kAngstromInBohr),
+                    o, fmt::format("ring{}L-{}-{}.toml", r.layers, name, r.rotationOrder),
                     fmt::format("{}-layer graphene ring sector ({} along the arc, 1/{} of the ring)",
-                                r.layers, r.direction, r.rotationOrder));
+                                r.layers, name, r.rotationOrder));
 }
 }  // namespace
 
@@ -153,9 +169,10 @@ Command makeBuildCommand() {
     g->add_option("layers", ring->layers, "number of graphene layers")->required();
     g->add_option("--direction", ring->direction, "sheet direction along the arc")
         ->required()
-        ->check(CLI::IsMember({"armchair", "zigzag"}));
+        ->check(CLI::IsMember({"armchair", "zigzag", "chiral"}));
+    g->add_option("--chiral", ring->chiral, "with --direction chiral: indices n,m of the arc direction (0 <= m <= n)");
     g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")->required();
-    g->add_option("--cells-along-arc", ring->cellsAlongArc, "rectangular sheet cells per sector (default 1)");
+    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector (default 1)");
     g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)");
     addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
     subs->ring = g;

@@ -244,14 +244,38 @@ ObjectiveCell readCollapsedBuilder(const TomlTable& b) {
   return buildCollapsedTube(readWalls(b), readBondLength(b), shape);
 }
 
+// The sheet direction along the arc: direction = "armchair" | "zigzag" | "chiral", the last
+// with chiral = [n, m] (0 <= m <= n, not both 0).
+ChiralIndices readSheetDirection(const TomlTable& b) {
+  const char* directions = "\"armchair\", \"zigzag\" or \"chiral\" (along the arc)";
+  const std::string dir = b.string("direction", directions);
+  if (dir != "armchair" && dir != "zigzag" && dir != "chiral")
+    b.fail("direction", "\"" + dir + "\"", directions);
+  if (dir != "chiral") {
+    if (b.has("chiral"))
+      b.fail("chiral", describe(b.at("chiral")) + " with direction = \"" + dir + "\"",
+             "no chiral key, or direction = \"chiral\" with chiral = [n, m]");
+    return chiralIndices(dir == "armchair" ? Direction::Armchair : Direction::Zigzag);
+  }
+  const char* expected = "chiral indices [n, m] (integers, 0 <= m <= n, not both 0)";
+  if (!b.has("chiral")) b.missing("chiral", std::string("with direction = \"chiral\": ") + expected);
+  const toml::value& v = b.at("chiral");
+  if (!v.is_array() || v.as_array().size() != 2 || !v.as_array()[0].is_integer() ||
+      !v.as_array()[1].is_integer())
+    b.fail("chiral", describe(v), expected);
+  const long n = v.as_array()[0].as_integer(), m = v.as_array()[1].as_integer();
+  if (n < 1 || m < 0 || m > n || n > 10000)
+    b.fail("chiral", fmt::format("[{}, {}]", n, m),
+           std::string(expected) + ", n <= 10000 (m > n is the mirror image of [m, n])");
+  return {static_cast<int>(n), static_cast<int>(m)};
+}
+
 ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
-  b.allowOnly({"type", "layers", "direction", "rotation_order", "cells_along_arc", "interlayer",
-               "bond_length"});
+  b.allowOnly({"type", "layers", "direction", "chiral", "rotation_order", "cells_along_arc",
+               "interlayer", "bond_length"});
   const long layers = b.integer("layers", "a number of layers >= 1");
   if (layers < 1 || layers > 1000) b.fail("layers", std::to_string(layers), "1 <= layers <= 1000");
-  const std::string dir = b.string("direction", "\"armchair\" or \"zigzag\" (along the arc)");
-  if (dir != "armchair" && dir != "zigzag")
-    b.fail("direction", "\"" + dir + "\"", "\"armchair\" or \"zigzag\" (along the arc)");
+  const ChiralIndices dir = readSheetDirection(b);
   const long na = b.integer("rotation_order", "the number of sectors N_a >= 3");
   if (na < 3 || na > 10000000) b.fail("rotation_order", std::to_string(na), "3 <= N_a <= 1e7");
   long cells = 1;
@@ -264,10 +288,9 @@ ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
     interlayer = b.number("interlayer", "a positive interlayer spacing (Å)");
     if (!(interlayer > 0.0)) b.fail("interlayer", fmt::format("{} Å", interlayer), "a positive spacing (Å)");
   }
-  return buildGrapheneRingSector(static_cast<int>(layers),
-                                 dir == "armchair" ? Direction::Armchair : Direction::Zigzag,
-                                 static_cast<int>(na), static_cast<int>(cells),
-                                 interlayer * kAngstromInBohr, readBondLength(b));
+  return buildGrapheneRingSector(static_cast<int>(layers), dir, static_cast<int>(na),
+                                 static_cast<int>(cells), interlayer * kAngstromInBohr,
+                                 readBondLength(b));
 }
 
 ObjectiveCell readBuilder(const TomlTable& b) {

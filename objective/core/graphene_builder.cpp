@@ -1,6 +1,11 @@
 #include "objective/core/graphene_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -11,54 +16,126 @@ namespace mesochain::objective {
 
 using units::kPi;
 
-ObjectiveCell buildGrapheneRingSector(int layers, Direction dir, int rotationOrder,
+namespace {
+
+constexpr const char* kSource = "<builder>";
+
+// The lattice data of one primitive direction in integer form. Sheet positions are written
+// in thirds of the lattice vectors, P = (P1, P2): r = (P1 a1 + P2 a2) / 3.
+struct SheetLattice {
+  long n, m, t1, t2;
+  long det;  // |n t2 - m t1| = 2 (n^2 + nm + m^2) / d_R: hexagons per cell
+  // Numerators of the fractional coordinates along C and T (denominator 3 det), by Cramer's
+  // rule for P/3 = f_C (n, m) + f_T (t1, t2); n t2 - m t1 < 0, hence the signs.
+  long numC(long p1, long p2) const { return -(p1 * t2 - p2 * t1); }
+  long numT(long p1, long p2) const { return -(n * p2 - m * p1); }
+};
+
+SheetLattice sheetLattice(ChiralIndices dir) {
+  if (dir.n < 1 || dir.m < 0 || dir.m > dir.n)
+    throw InputError(kSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m),
+                     "chiral indices 0 <= m <= n, not both 0 (m > n is the mirror image of "
+                     "(m, n))");
+  if (dir.n > 10000)
+    throw InputError(kSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m), "n <= 10000");
+  const long g = std::gcd(dir.n, dir.m);
+  SheetLattice l{};
+  l.n = dir.n / g;
+  l.m = dir.m / g;
+  const long dr = std::gcd(2 * l.n + l.m, 2 * l.m + l.n);
+  l.t1 = (2 * l.m + l.n) / dr;
+  l.t2 = -(2 * l.n + l.m) / dr;
+  l.det = -(l.n * l.t2 - l.m * l.t1);
+  return l;
+}
+
+// Fractional coordinates (f_C, f_T) in [0, 1)^2 of the atoms of one sheet cell, the whole
+// sheet shifted by `shift` thirds of a1 + a2. Sublattices at 0 and 2 (a1 + a2)/3.
+std::vector<std::pair<double, double>> sheetCellAtoms(const SheetLattice& l, int shift) {
+  const long den = 3 * l.det;
+  const long iMin = std::min({0L, l.n, l.t1, l.n + l.t1}) - 1;
+  const long iMax = std::max({0L, l.n, l.t1, l.n + l.t1}) + 1;
+  const long jMin = std::min({0L, l.m, l.t2, l.m + l.t2}) - 1;
+  const long jMax = std::max({0L, l.m, l.t2, l.m + l.t2}) + 1;
+  std::vector<std::pair<long, long>> found;
+  for (long i = iMin; i <= iMax; ++i)
+    for (long j = jMin; j <= jMax; ++j)
+      for (int sub : {0, 2}) {
+        const long p1 = 3 * i + sub + shift, p2 = 3 * j + sub + shift;
+        const long c = l.numC(p1, p2), t = l.numT(p1, p2);
+        if (c >= 0 && c < den && t >= 0 && t < den) found.emplace_back(c, t);
+      }
+  if (static_cast<long>(found.size()) != 2 * l.det)
+    throw std::logic_error(fmt::format("graphene sheet cell ({}, {}): {} atoms, expected {}", l.n,
+                                       l.m, found.size(), 2 * l.det));
+  std::sort(found.begin(), found.end());
+  std::vector<std::pair<double, double>> f;
+  for (const auto& [c, t] : found)
+    f.emplace_back(static_cast<double>(c) / den, static_cast<double>(t) / den);
+  return f;
+}
+
+}  // namespace
+
+ChiralIndices chiralIndices(Direction dir) {
+  return dir == Direction::Armchair ? ChiralIndices{1, 1} : ChiralIndices{1, 0};
+}
+
+GrapheneSheetCell grapheneSheetCell(ChiralIndices dir, double bondLength) {
+  const SheetLattice l = sheetLattice(dir);
+  const double a = std::sqrt(3.0) * bondLength;
+  // |n a1 + m a2|^2 = a^2 (n^2 + nm + m^2); likewise for T.
+  GrapheneSheetCell s;
+  s.primitive = {static_cast<int>(l.n), static_cast<int>(l.m)};
+  s.arcPeriod = a * std::sqrt(static_cast<double>(l.n * l.n + l.n * l.m + l.m * l.m));
+  s.axialPeriod = a * std::sqrt(static_cast<double>(l.t1 * l.t1 + l.t1 * l.t2 + l.t2 * l.t2));
+  s.atomsPerLayer = static_cast<int>(2 * l.det);
+  return s;
+}
+
+ObjectiveCell buildGrapheneRingSector(int layers, ChiralIndices dir, int rotationOrder,
                                       int cellsAlongArc, double interlayer, double bondLength) {
-  const char* source = "<builder>";
-  if (layers < 1) throw InputError(source, "layers", std::to_string(layers), "at least one layer");
+  if (layers < 1) throw InputError(kSource, "layers", std::to_string(layers), "at least one layer");
   if (rotationOrder < 1)
-    throw InputError(source, "rotation_order", std::to_string(rotationOrder), "an integer >= 1");
+    throw InputError(kSource, "rotation_order", std::to_string(rotationOrder), "an integer >= 1");
   if (cellsAlongArc < 1)
-    throw InputError(source, "cells_along_arc", std::to_string(cellsAlongArc),
+    throw InputError(kSource, "cells_along_arc", std::to_string(cellsAlongArc),
                      "at least one cell per sector");
   if (!std::isfinite(bondLength) || !(bondLength > 0.0))
-    throw InputError(source, "bond_length", fmt::format("{}", bondLength),
+    throw InputError(kSource, "bond_length", fmt::format("{}", bondLength),
                      "a positive, finite bond length");
   if (layers > 1 && (!std::isfinite(interlayer) || !(interlayer > 0.0)))
-    throw InputError(source, "interlayer", fmt::format("{}", interlayer),
+    throw InputError(kSource, "interlayer", fmt::format("{}", interlayer),
                      "a positive, finite interlayer distance");
-  const double b = bondLength;
-  const double a = std::sqrt(3.0) * b;
-  const double px = a, py = 3.0 * b;  // periods along x (zigzag) and y (armchair)
-  const bool zigzagArc = dir == Direction::Zigzag;
-  const double arcPeriod = zigzagArc ? px : py;
-  const double axialPeriod = zigzagArc ? py : px;
-  const double rMid = rotationOrder * cellsAlongArc * arcPeriod / (2.0 * kPi);
+  const SheetLattice lattice = sheetLattice(dir);
+  const GrapheneSheetCell sheet = grapheneSheetCell(dir, bondLength);
+  const double rMid = rotationOrder * cellsAlongArc * sheet.arcPeriod / (2.0 * kPi);
   const double rInner = rMid - 0.5 * (layers - 1) * interlayer;
   if (!(rInner > 0.0))
     throw InputError(
-        source, "rotation_order and cells_along_arc",
+        kSource, "rotation_order and cells_along_arc",
         fmt::format("a middle radius of {:.4f} Å for {} layers {:.4f} Å apart",
                     rMid * units::kBohrInAngstrom, layers, interlayer * units::kBohrInAngstrom),
         "an innermost layer at positive radius (more cells per sector)");
-  // The rectangular cell of the flat sheet (x zigzag, y armchair).
-  const double cellX[4] = {0.0, a / 2, a / 2, 0.0};
-  const double cellY[4] = {0.0, b / 2, 1.5 * b, 2.0 * b};
+  const auto layerA = sheetCellAtoms(lattice, 0);
+  const auto layerB = sheetCellAtoms(lattice, 1);  // Bernal: shifted by (a1 + a2)/3
   ObjectiveCell cell;
-  cell.symmetry = Symmetry::screw(axialPeriod, 0.0, rotationOrder);
+  cell.symmetry = Symmetry::screw(sheet.axialPeriod, 0.0, rotationOrder);
   for (int k = 0; k < layers; ++k) {
     const double radius = rMid + (k - 0.5 * (layers - 1)) * interlayer;
-    const double shiftY = (k % 2 == 1) ? b : 0.0;  // Bernal stacking ABAB...
     for (int c = 0; c < cellsAlongArc; ++c)
-      for (int s = 0; s < 4; ++s) {
-        double x = cellX[s];
-        double y = std::fmod(cellY[s] + shiftY, py);
-        double arc = zigzagArc ? x + c * px : y + c * py;
-        const double axial = zigzagArc ? y : x;
-        const double phi = arc / rMid;
-        cell.addAtom("C", {radius * std::cos(phi), radius * std::sin(phi), axial});
+      for (const auto& [fc, ft] : (k % 2 == 1) ? layerB : layerA) {
+        const double phi = (c + fc) * sheet.arcPeriod / rMid;
+        cell.addAtom("C", {radius * std::cos(phi), radius * std::sin(phi), ft * sheet.axialPeriod});
       }
   }
   return cell;
+}
+
+ObjectiveCell buildGrapheneRingSector(int layers, Direction dir, int rotationOrder,
+                                      int cellsAlongArc, double interlayer, double bondLength) {
+  return buildGrapheneRingSector(layers, chiralIndices(dir), rotationOrder, cellsAlongArc,
+                                 interlayer, bondLength);
 }
 
 }  // namespace mesochain::objective

@@ -72,3 +72,45 @@ TEST(CellFileBuilders, BadBuilderInputNamesTheKey) {
             std::string::npos);
   EXPECT_NE(message("[builder]\ntype = \"helix\"\n").find("type"), std::string::npos);
 }
+
+TEST(CellFileBuilders, ChiralGrapheneRingEqualsTheLibraryBuilder) {
+  const CellInput in = readText(
+      "[builder]\ntype = \"graphene_ring\"\nlayers = 2\ndirection = \"chiral\"\nchiral = [4, 2]\n"
+      "rotation_order = 40\ncells_along_arc = 2\ninterlayer = 3.4\nbond_length = 1.43\n");
+  // [4, 2] is reduced to the primitive direction (2, 1): 28 atoms per layer and cell.
+  const ObjectiveCell ref = buildGrapheneRingSector(
+      2, ChiralIndices{2, 1}, 40, 2, 3.4 * units::kAngstromInBohr, 1.43 * units::kAngstromInBohr);
+  ASSERT_EQ(in.cell.atomCount(), 2 * 2 * 28);
+  ASSERT_EQ(in.cell.atomCount(), ref.atomCount());
+  EXPECT_LT((in.cell.positions - ref.positions).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(in.cell.symmetry.rotationOrder(), 40);
+  EXPECT_NEAR(in.cell.symmetry.translation(), ref.symmetry.translation(), 1e-12);
+}
+
+TEST(CellFileBuilders, BadChiralIndicesNameTheFileAndKey) {
+  auto message = [](const std::string& keys) {
+    try {
+      readText("[builder]\ntype = \"graphene_ring\"\nlayers = 2\nrotation_order = 100\n" + keys);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const char* bad[] = {
+      "direction = \"chiral\"\nchiral = [-2, 1]\n",   // negative
+      "direction = \"chiral\"\nchiral = [2, -1]\n",   // negative
+      "direction = \"chiral\"\nchiral = [0, 0]\n",    // no direction
+      "direction = \"chiral\"\nchiral = [1, 2]\n",    // m > n
+      "direction = \"chiral\"\nchiral = [2]\n",       // not a pair
+      "direction = \"chiral\"\nchiral = [2.0, 1]\n",  // not integers
+      "direction = \"chiral\"\nchiral = \"2,1\"\n",   // not an array
+      "direction = \"chiral\"\n",                     // missing
+      "direction = \"armchair\"\nchiral = [2, 1]\n",  // chiral without direction = "chiral"
+  };
+  for (const char* keys : bad) {
+    const std::string e = message(keys);
+    EXPECT_NE(e.find("chiral"), std::string::npos) << keys << ": " << e;
+    EXPECT_NE(e.find("mesochain_builder_"), std::string::npos) << keys << ": " << e;  // the file
+    EXPECT_NE(e.find("builder.chiral"), std::string::npos) << keys << ": " << e;      // the key
+  }
+}
