@@ -23,6 +23,8 @@ struct PlateStack {
   std::optional<ScanCurve> scan;            // a bend table, or
   std::optional<GivenConstant> rigidity;    // D (Hartree) given directly
   std::optional<double> areaPerCell;        // Bohr^2; default T0 x width of the table
+  std::optional<double> spacing;            // Bohr: this stack's measured mean interlayer
+                                            // spacing for its bonded bound; default Z0
   std::string source;                       // where the stack was declared
 };
 
@@ -44,6 +46,7 @@ struct PlateStackResult {
   std::string source;
   std::optional<FittedCurve> curve;          // when fitted from a scan
   double areaPerCell = 0.0;                  // Bohr^2 (scan only): D = D_cell / area
+  double spacing = 0.0;                      // Bohr: the spacing of its bonded bound
 };
 
 struct PlateRun {

@@ -135,6 +135,24 @@ TEST(PlateRun, PlateFileConvertsUnitsAndReadsScansBesideIt) {
               {"plate.toml", "a second stack of 1 layers"});
   expectError(head + "poisson_ratio = 0.2\n[[stack]]\nlayer = 1\n", {"plate.toml", "layer", "unknown key"});
   expectError(head + "poisson_ratio = 0.2\nC2 = 3\n", {"plate.toml", "C2", "unknown key"});
+  expectError(head + "poisson_ratio = 0.2\n[[stack]]\nlayers = 1\nrigidity_eV = 1\ninterlayer_spacing_angstrom = -3\n",
+              {"plate.toml", "interlayer_spacing_angstrom", "> 0"});
+
+  // A stack's own (measured) spacing sets its bonded bound: the membrane term scales as Z^2.
+  std::ofstream(path) << head + "poisson_ratio = 0.2\nsingle_layer_rigidity_eV = 1.4\n"
+                                "[[stack]]\nlayers = 4\nrigidity_eV = 1000\ninterlayer_spacing_angstrom = 3.30\n"
+                                "[[stack]]\nlayers = 3\nrigidity_eV = 500\n";
+  PlateInputs own;
+  readPlateFile(path, own);
+  const PlateRun ownRun = runPlate(own);
+  const auto& four = ownRun.report["stacks"][1];
+  const auto& three = ownRun.report["stacks"][0];
+  EXPECT_NEAR(four["interlayer_spacing_angstrom"].get<double>(), 3.30, 1e-12);
+  EXPECT_NEAR(three["interlayer_spacing_angstrom"].get<double>(), 3.35, 1e-12);
+  const double membrane4 = (four["bonded_eV"].get<double>() - 4 * 1.4);
+  const double curve4 = ownRun.bonded[3] * units::kHartreeInEv - 4 * 1.4;  // the curve keeps Z0
+  EXPECT_NEAR(membrane4 / curve4, std::pow(3.30 / 3.35, 2), 1e-12);
+  EXPECT_NEAR(three["bonded_eV"].get<double>(), ownRun.bonded[2] * units::kHartreeInEv, 1e-9);
   expectError(head + "poisson_ratio = 0.2\n[[stack]]\nlayers = 1\nscan = \"missing.json\"\n", {"missing.json"});
   std::filesystem::remove_all(dir);
 }
