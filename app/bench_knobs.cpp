@@ -282,8 +282,18 @@ int benchKnobs(const KnobsOptions& o) {
   dftb::CalculatorSettings ring = straight;  // as runScan: rings use one kappa point
   ring.band.helicalKPoints = 1;
   ring.band.angular = f.input.settings.ringAngular;
-  bool anyRing = false, anyStraight = false;
-  for (const auto& c : f.cells) (c.symmetry.isRing() ? anyRing : anyStraight) = true;
+  bool anyRing = false;
+  for (const auto& c : f.cells) anyRing = anyRing || c.symmetry.isRing();
+  // The other curves are read and checked before any evaluation (a heavy run must not end in
+  // a typo).
+  std::vector<beam::ScanCurve> others;
+  for (const std::string& path : o.compare) {
+    others.push_back(beam::readScanTable(path));
+    if (others.back().label() != f.curve.label())
+      throw InputError(path, "key kind", others.back().label(),
+                       f.curve.label() + ", the kind of " + f.input.jsonPath);
+    curveCost(path);
+  }
 
   std::vector<std::string> notes;
   std::vector<std::vector<KnobSetting>> series;
@@ -368,13 +378,7 @@ int benchKnobs(const KnobsOptions& o) {
       relax.emplace_back(curveCost(path).largestForce, std::move(r));
     };
     add(f.input.jsonPath, f.curve, true);
-    for (const std::string& path : o.compare) {
-      const beam::ScanCurve other = beam::readScanTable(path);
-      if (other.label() != f.curve.label())
-        throw InputError(path, "key kind", other.label(),
-                         f.curve.label() + ", the kind of " + f.input.jsonPath);
-      add(path, other, false);
-    }
+    for (std::size_t k = 0; k < others.size(); ++k) add(o.compare[k], others[k], false);
     std::stable_sort(relax.begin(), relax.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
     const std::size_t first = rows.size();
