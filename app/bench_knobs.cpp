@@ -34,6 +34,7 @@
 #include "common/plot/figure.hpp"
 #include "common/progress_bar.hpp"
 #include "objective/drivers/cell_calculator.hpp"
+#include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {
 
@@ -51,6 +52,7 @@ struct KnobsOptions {
   double tolerance = 0.02;
   std::string linearTerm = "auto";
   bool measuredCurvature = false;
+  bool forces = false;
 };
 
 struct Row {
@@ -58,6 +60,7 @@ struct Row {
   bool own = false, reference = false;
   double constant = kNaN, uncertainty = kNaN, relative = kNaN;
   double cpuPerEvaluation = kNaN, wallPerEvaluation = kNaN, totalWall = kNaN;
+  double maxForce = kNaN;  // largest |force| on the structures at this setting, Ha/Bohr
   int evaluations = 0;
   std::string note;
 };
@@ -84,14 +87,18 @@ double cpuSeconds() {
 struct Evaluation {
   std::vector<double> energies;
   double wall = 0, cpu = 0;
+  double largestForce = kNaN;  // with forces: the largest atom force over the structures
 };
 
 Evaluation evaluate(const FinishedScan& f, const std::shared_ptr<const dftb::ParameterSet>& params,
                     const dftb::CalculatorSettings& straightSettings,
-                    const dftb::CalculatorSettings& ringSettings, ProgressBar& bar, int& done,
-                    const std::string& what) {
+                    const dftb::CalculatorSettings& ringSettings, bool forces, ProgressBar& bar,
+                    int& done, const std::string& what) {
   const dftb::Calculator straight(params, straightSettings), ring(params, ringSettings);
   Evaluation e;
+  if (forces) e.largestForce = 0;
+  dftb::EvaluationRequest request;
+  request.gradient = forces;
   const int n = static_cast<int>(f.cells.size());
   for (int k = 0; k < n; ++k) {
     bar.update(done, fmt::format("{}: point {}/{}", what, k + 1, n));
@@ -99,10 +106,11 @@ Evaluation evaluate(const FinishedScan& f, const std::shared_ptr<const dftb::Par
     const dftb::Calculator& calc = cell.symmetry.isRing() ? ring : straight;
     const double c0 = cpuSeconds();
     const auto w0 = std::chrono::steady_clock::now();
-    const double energy = calc.evaluate(cell, dftb::EvaluationRequest{}).freeEnergy;
+    const dftb::Result result = calc.evaluate(cell, request);
     e.wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     e.cpu += cpuSeconds() - c0;
-    e.energies.push_back(energy * f.cellsPerSlice);
+    e.energies.push_back(result.freeEnergy * f.cellsPerSlice);
+    if (forces) e.largestForce = std::max(e.largestForce, objective::maxForce(result.gradient));
     bar.update(++done);
   }
   return e;
@@ -134,6 +142,7 @@ Row timedRow(const KnobSetting& s, const Evaluation& e) {
   r.totalWall = e.wall;
   r.wallPerEvaluation = e.wall / r.evaluations;
   r.cpuPerEvaluation = e.cpu / r.evaluations;
+  r.maxForce = e.largestForce;
   return r;
 }
 
@@ -196,6 +205,7 @@ Row relaxationRow(const std::string& path, const beam::ScanCurve& curve, const K
   r.totalWall = cost.seconds;
   r.evaluations = cost.evaluations;
   r.wallPerEvaluation = cost.evaluations > 0 ? cost.seconds / cost.evaluations : kNaN;
+  r.maxForce = cost.largestForce;
   fitInto(r, curve, nullptr, o);
   return r;
 }
@@ -212,12 +222,13 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
     std::ofstream out(o.csv);
     if (!out) throw InputError(o.csv, "cannot open the CSV output for writing");
     out << "knob,setting,scan_setting,reference,constant,uncertainty,relative_difference,"
-           "cpu_s_per_evaluation,wall_s_per_evaluation,total_wall_s,evaluations,note\n";
+           "cpu_s_per_evaluation,wall_s_per_evaluation,total_wall_s,evaluations,"
+           "max_force_hartree_per_bohr,note\n";
     for (const Row& r : rows)
-      out << fmt::format("{},{},{},{},{:.12g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{},{}\n", r.knob,
-                         csvField(r.setting), r.own, r.reference, r.constant, r.uncertainty,
-                         r.relative, r.cpuPerEvaluation, r.wallPerEvaluation, r.totalWall,
-                         r.evaluations, csvField(r.note));
+      out << fmt::format("{},{},{},{},{:.12g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{},{:.4g},{}\n",
+                         r.knob, csvField(r.setting), r.own, r.reference, r.constant,
+                         r.uncertainty, r.relative, r.cpuPerEvaluation, r.wallPerEvaluation,
+                         r.totalWall, r.evaluations, r.maxForce, csvField(r.note));
     std::cerr << "wrote " << o.csv << "\n";
   }
   if (!o.json.empty()) {
@@ -232,6 +243,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
                            {"cpu_s_per_evaluation", num(r.cpuPerEvaluation)},
                            {"wall_s_per_evaluation", num(r.wallPerEvaluation)},
                            {"total_wall_s", num(r.totalWall)}, {"evaluations", r.evaluations},
+                           {"max_force_hartree_per_bohr", num(r.maxForce)},
                            {"note", r.note}});
     std::ofstream out(o.json);
     if (!out) throw InputError(o.json, "cannot open the JSON output for writing");
@@ -333,10 +345,11 @@ int benchKnobs(const KnobsOptions& o) {
   // One untimed evaluation first: the first one of a process also pays one-off start-up costs.
   {
     const objective::ObjectiveCell& c = f.cells[0];
-    dftb::Calculator(params, c.symmetry.isRing() ? ring : straight)
-        .evaluate(c, dftb::EvaluationRequest{});
+    dftb::EvaluationRequest request;
+    request.gradient = o.forces;
+    dftb::Calculator(params, c.symmetry.isRing() ? ring : straight).evaluate(c, request);
   }
-  const Evaluation own = evaluate(f, params, straight, ring, bar, done, "scan settings");
+  const Evaluation own = evaluate(f, params, straight, ring, o.forces, bar, done, "scan settings");
 
   double largest = 0;
   for (int k = 0; k < n; ++k)
@@ -358,15 +371,20 @@ int benchKnobs(const KnobsOptions& o) {
       }
       dftb::CalculatorSettings a = straight, b = ring;
       k.apply(a, b);
-      const Evaluation e = evaluate(f, params, a, b, bar, done, k.knob + " " + k.label);
+      const Evaluation e = evaluate(f, params, a, b, o.forces, bar, done, k.knob + " " + k.label);
       rows.push_back(timedRow(k, e));
       fitInto(rows.back(), f.curve, &e.energies, o);
     }
     markReference(rows, first);
   }
   bar.finish();
-  for (Row& r : rows)
+  const double tolerance = f.input.settings.relax.forceTolerance;
+  for (Row& r : rows) {
     if (r.knob == "angular") ringSamplingNote(r, f);
+    if (r.maxForce > tolerance)
+      r.note += fmt::format("{}max|F| above the scan's tolerance {:.0e} Ha/Bohr",
+                            r.note.empty() ? "" : "; ", tolerance);
+  }
 
   // Whole scans: the scan's own curve and the others, the most tightly relaxed as reference.
   if (!o.compare.empty()) {
@@ -400,15 +418,20 @@ int benchKnobs(const KnobsOptions& o) {
                            fromCurve.constant, fromCurve.uncertainty, q.unit,
                            fromCurve.note.empty() ? "" : " (" + fromCurve.note + ")");
   for (const std::string& note : notes) std::cout << "note: " << note << "\n";
-  std::cout << fmt::format("{:<11} {:<44} {:>16} {:>10} {:>10} {:>11} {:>11} {:>10}\n", "knob",
-                           "setting", q.name + " [" + q.unit + "]", "+-", "rel.diff",
-                           "cpu/eval[s]", "wall/eval[s]", "total[s]");
+  // Not measured: "-" (CPU time of whole scans; forces without --forces).
+  auto cell = [](double x, const char* spec) {
+    return std::isnan(x) ? std::string("-") : fmt::format(fmt::runtime(spec), x);
+  };
+  std::cout << fmt::format("{:<11} {:<44} {:>16} {:>10} {:>10} {:>11} {:>11} {:>10} {:>9}\n",
+                           "knob", "setting", q.name + " [" + q.unit + "]", "+-", "rel.diff",
+                           "cpu/eval[s]", "wall/eval[s]", "total[s]", "max|F|");
   for (const Row& r : rows) {
     std::string setting = r.setting + (r.own ? " (scan)" : "") + (r.reference ? " (ref)" : "");
-    std::cout << fmt::format("{:<11} {:<44} {:>16.8g} {:>10.2g} {:>10.2e} {:>11.3g} {:>11.3g} "
-                             "{:>10.3g}{}\n",
-                             r.knob, setting, r.constant, r.uncertainty, r.relative,
-                             r.cpuPerEvaluation, r.wallPerEvaluation, r.totalWall,
+    std::cout << fmt::format("{:<11} {:<44} {:>16} {:>10} {:>10} {:>11} {:>11} {:>10} {:>9}{}\n",
+                             r.knob, setting, cell(r.constant, "{:.8g}"),
+                             cell(r.uncertainty, "{:.2g}"), cell(r.relative, "{:.2e}"),
+                             cell(r.cpuPerEvaluation, "{:.3g}"), cell(r.wallPerEvaluation, "{:.3g}"),
+                             cell(r.totalWall, "{:.3g}"), cell(r.maxForce, "{:.1e}"),
                              r.note.empty() ? "" : "  " + r.note);
   }
   std::cout << std::flush;
@@ -467,6 +490,9 @@ Command makeBenchKnobsCommand() {
     s->add_option("--linear-term", o->linearTerm, "auto (stretch, twist: on; bend: off), on, off");
     s->add_flag("--measured-curvature", o->measuredCurvature,
                 "fit bends against the measured curvature");
+    s->add_flag("--forces", o->forces,
+                "evaluate forces too: the largest force on the relaxed structures at each "
+                "setting, and the time of an evaluation as in a relaxation step");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

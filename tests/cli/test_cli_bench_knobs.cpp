@@ -102,8 +102,8 @@ fs::path BenchKnobs::dir;
 
 TEST_F(BenchKnobs, StretchAtTheScanSettingsReproducesTheCurve) {
   std::string out;
-  ASSERT_EQ(run("bench knobs stretch.toml --kpoints 8,64 --temperature 1000 --json knobs.json "
-                "--csv knobs.csv --png knobs.png",
+  ASSERT_EQ(run("bench knobs stretch.toml --kpoints 8,64 --temperature 1000 --forces "
+                "--json knobs.json --csv knobs.csv --png knobs.png",
                 dir, out),
             0)
       << out;
@@ -123,6 +123,16 @@ TEST_F(BenchKnobs, StretchAtTheScanSettingsReproducesTheCurve) {
   EXPECT_NEAR(row(r, "kpoints", "8").at("relative_difference").get<double>(),
               c8 / row(r, "kpoints", "64").at("constant").get<double>() - 1, 1e-12);
   EXPECT_EQ(r.at("rows").size(), 5u);
+  // --forces: at the scan's settings the largest force is the one the scan reported for its
+  // relaxed points; at 8 kappa points the same atoms are no longer relaxed.
+  double scanForce = 0;
+  const json curve = readJson(dir / "stretch.json");
+  for (const json& p : curve.at("points"))
+    scanForce = std::max(scanForce, p.at("max_force_hartree_per_bohr").get<double>());
+  const double ownForce = own.at("max_force_hartree_per_bohr").get<double>();
+  EXPECT_NEAR(ownForce, scanForce, 1e-6 * scanForce);
+  EXPECT_LE(ownForce, 1e-5);
+  EXPECT_GT(row(r, "kpoints", "8").at("max_force_hartree_per_bohr").get<double>(), 10 * ownForce);
   const mesochain::plot::Image png = mesochain::plot::readPng((dir / "knobs.png").string());
   EXPECT_EQ(png.width(), 900);
   EXPECT_EQ(png.height(), 600);
