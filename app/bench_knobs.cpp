@@ -336,6 +336,14 @@ int benchKnobs(const KnobsOptions& o) {
   if (!o.temperature.empty())
     series.push_back(knobs::temperatureSettings(o.temperature, straight.band.electronicTemperature));
 
+  // A curve the fitter refuses as it stands has nothing to compare: stop before the work.
+  Row fromCurve;
+  fitInto(fromCurve, f.curve, nullptr, o);
+  if (!fromCurve.note.empty())
+    throw InputError(f.input.jsonPath, "the curve of the scan", fromCurve.note,
+                     "a curve the fitter of mesochain beam accepts (see --linear-term, "
+                     "--tolerance, --measured-curvature)");
+
   const int n = static_cast<int>(f.cells.size());
   int total = n;
   for (const auto& s : series)
@@ -354,8 +362,7 @@ int benchKnobs(const KnobsOptions& o) {
   double largest = 0;
   for (int k = 0; k < n; ++k)
     largest = std::max(largest, std::abs(own.energies[k] - f.curve.points[k].energy));
-  Row fromCurve, reevaluated;
-  fitInto(fromCurve, f.curve, nullptr, o);
+  Row reevaluated;
   fitInto(reevaluated, f.curve, &own.energies, o);
 
   std::vector<Row> rows;
@@ -414,9 +421,8 @@ int benchKnobs(const KnobsOptions& o) {
   std::cout << fmt::format(
       "consistency: the structures re-evaluated at the scan's settings reproduce the curve "
       "energies to {:.2e} Ha per slice (largest difference)\n", largest);
-  std::cout << fmt::format("{} from the curve JSON: {:.8g} +- {:.2g} {}{}\n", q.name,
-                           fromCurve.constant, fromCurve.uncertainty, q.unit,
-                           fromCurve.note.empty() ? "" : " (" + fromCurve.note + ")");
+  std::cout << fmt::format("{} from the curve JSON: {:.8g} +- {:.2g} {}\n", q.name,
+                           fromCurve.constant, fromCurve.uncertainty, q.unit);
   for (const std::string& note : notes) std::cout << "note: " << note << "\n";
   // Not measured: "-" (CPU time of whole scans; forces without --forces).
   auto cell = [](double x, const char* spec) {

@@ -248,4 +248,16 @@ TEST_F(BenchKnobs, BadKnobValuesAreClearErrors) {
     EXPECT_EQ(out.find(o), std::string::npos) << out;
 }
 
+TEST_F(BenchKnobs, ACurveTheFitterRefusesIsAClearError) {
+  // Three points: the stretch fit (with its linear term) needs four.
+  std::ofstream(dir / "three.toml")
+      << "format = 1\ncell = \"cnt55.toml\"\nkind = \"stretch\"\nstrains = [-0.005, 0.005]\n"
+         "[output]\njson = \"three.json\"\nstructures = \"three\"\n";
+  std::string out;
+  ASSERT_EQ(run("scan three.toml", dir, out), 0) << out;
+  EXPECT_NE(run("bench knobs three.toml --kpoints 16", dir, out), 0);
+  EXPECT_NE(out.find("three.json, the curve of the scan"), std::string::npos) << out;
+  EXPECT_NE(out.find("too few points"), std::string::npos) << out;
+}
+
 }  // namespace
