@@ -198,9 +198,9 @@ TEST_F(BenchKnobs, CompareCurveReportsTheOtherScanAndItsTime) {
   json twist = readJson(dir / "stretch-loose.json");
   twist["kind"] = "twist";
   twist["deformation_unit"] = "rad_per_cell";
-  std::ofstream(dir / "twist.json") << twist.dump();
-  EXPECT_NE(run("bench knobs stretch.toml --compare-curve twist.json", dir, out), 0);
-  EXPECT_NE(out.find("twist.json"), std::string::npos) << out;
+  std::ofstream(dir / "wrong-kind.json") << twist.dump();
+  EXPECT_NE(run("bench knobs stretch.toml --compare-curve wrong-kind.json", dir, out), 0);
+  EXPECT_NE(out.find("wrong-kind.json"), std::string::npos) << out;
 }
 
 TEST_F(BenchKnobs, MissingOrMismatchedStructuresAreClearErrors) {
@@ -246,6 +246,22 @@ TEST_F(BenchKnobs, BadKnobValuesAreClearErrors) {
   EXPECT_NE(out.find("--temperature: found '0'"), std::string::npos) << out;
   for (const std::string& o : {std::string("terminate"), std::string("Segmentation")})
     EXPECT_EQ(out.find(o), std::string::npos) << out;
+}
+
+TEST_F(BenchKnobs, TwistAtTheScanSettingsReproducesTheCurve) {
+  // The structures' twists minus the reference's give the curve's deformations (rad per cell).
+  std::ofstream(dir / "twist.toml")
+      << "format = 1\ncell = \"cnt55.toml\"\nkind = \"twist\"\n"
+         "twist_deg_per_cell = [-0.5, -0.25, 0.25, 0.5]\n[relax]\nforce_tolerance = 1e-5\n"
+         "[output]\njson = \"twist.json\"\nstructures = \"twist\"\n";
+  std::string out;
+  ASSERT_EQ(run("scan twist.toml", dir, out), 0) << out;
+  ASSERT_EQ(run("bench knobs twist.toml --kpoints 128 --json twist-knobs.json", dir, out), 0) << out;
+  const json r = readJson(dir / "twist-knobs.json");
+  EXPECT_LT(r.at("max_abs_energy_difference_hartree").get<double>(), 1e-9);
+  const mesochain::beam::ScanCurve c = mesochain::beam::readScanTable((dir / "twist.json").string());
+  const double direct = mesochain::beam::fitScanCurve(c, "K", "K", 0.02, "auto", false).fit.stiffness;
+  EXPECT_NEAR(row(r, "kpoints", "32").at("constant").get<double>(), direct, 1e-9 * direct);
 }
 
 TEST_F(BenchKnobs, ACurveTheFitterRefusesIsAClearError) {
