@@ -1,5 +1,5 @@
 // `mesochain bench knobs` end to end on tiny finished scans made here: a (5,5) helical stretch
-// (5 points) and an (8,0) bend (the straight reference and two rings, T = 0). The structures
+// and twist (5 points each) and an (8,0) bend (the straight reference and two rings, T = 0). The structures
 // re-evaluated at the scan's own settings reproduce the curve: the scan-setting row's constant
 // equals the constant the beam fitter gets from the curve JSON itself, and a curve energy
 // shifted on purpose shows up as exactly that difference in the consistency check. Another
