@@ -19,16 +19,17 @@ Command makeBenchSlidingCommand();
 Command makeBenchZippingCommand();
 Command makeBenchScanCommand();
 Command makeBenchSkgenCommand();
+Command makeBenchKnobsCommand();
 
 Command makeBenchCommand() {
   auto subs = std::make_shared<std::vector<Command>>(std::vector<Command>{
       makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
       makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(), makeBenchSlidingCommand(), makeBenchZippingCommand(),
-      makeBenchScanCommand(), makeBenchSkgenCommand()});
+      makeBenchScanCommand(), makeBenchSkgenCommand(), makeBenchKnobsCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
     auto* bench = app.add_subcommand(
-        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, sliding, zipping, scan, skgen");
+        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, sliding, zipping, scan, skgen, knobs");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };
