@@ -47,7 +47,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct KnobsOptions {
   std::string scanFile;
-  std::vector<std::string> kpoints, angular, dispersion, temperature, compare;
+  std::vector<std::string> kpoints, angular, sampling, dispersion, temperature, compare;
   std::string csv, json, png;
   double tolerance = 0.02;
   std::string linearTerm = "auto";
@@ -159,8 +159,10 @@ void markReference(std::vector<Row>& rows, std::size_t first) {
 // multiple of 4 M (objective/core/kgrid.cpp; docs/scan-file.md): otherwise the rounded samples
 // are uneven and the ring energies carry a sampling bias. Noted on the row.
 void ringSamplingNote(Row& r, const FinishedScan& f) {
-  if (r.setting == "all") return;
-  const int m = std::stoi(r.setting);
+  // "M" (angular) or "K:M" (sampling): the ring samples are M.
+  const std::string mu = r.setting.substr(r.setting.find(':') + 1);
+  if (mu == "all") return;
+  const int m = std::stoi(mu);
   std::vector<int> uneven;
   for (const auto& c : f.cells) {
     const int na = c.symmetry.rotationOrder();
@@ -325,6 +327,15 @@ int benchKnobs(const KnobsOptions& o) {
     else
       series.push_back(std::move(settings));
   }
+  if (!o.sampling.empty()) {
+    auto settings = knobs::samplingSettings(o.sampling, straight.band.helicalKPoints,
+                                            f.input.settings.ringAngular.samples);
+    if (f.curve.kind != "bend")
+      notes.push_back("sampling: only for bend scans (use --kpoints otherwise); --sampling ignored "
+                      "for a " + f.curve.kind + " scan");
+    else
+      series.push_back(std::move(settings));
+  }
   if (!o.dispersion.empty()) {
     auto settings = knobs::dispersionSettings(o.dispersion, straight.dispersion);
     if (!straight.dispersion.enabled)
@@ -387,7 +398,7 @@ int benchKnobs(const KnobsOptions& o) {
   bar.finish();
   const double tolerance = f.input.settings.relax.forceTolerance;
   for (Row& r : rows) {
-    if (r.knob == "angular") ringSamplingNote(r, f);
+    if (r.knob == "angular" || r.knob == "sampling") ringSamplingNote(r, f);
     if (r.maxForce > tolerance)
       r.note += fmt::format("{}max|F| above the scan's tolerance {:.0e} Ha/Bohr",
                             r.note.empty() ? "" : "; ", tolerance);
@@ -480,6 +491,10 @@ Command makeBenchKnobsCommand() {
         ->required();
     s->add_option("--kpoints", o->kpoints, "helical k-points to try, e.g. 12,24,48")->delimiter(',');
     s->add_option("--angular", o->angular, "ring angular samples to try (bend), e.g. 6,12,24,all")
+        ->delimiter(',');
+    s->add_option("--sampling", o->sampling,
+                  "bend: helical k-points of the straight reference and ring angular samples "
+                  "together, K:M, e.g. 12:6,24:12,48:24 (consistent when K = 2M)")
         ->delimiter(',');
     s->add_option("--dispersion", o->dispersion,
                   "LJ tail treatments to try: cutoff:R (Å), ewald, ewald:TOL")

@@ -33,7 +33,7 @@ FinishedScan readFinishedScan(const std::string& scanFile);
 // One setting of one knob: how it changes the calculator settings of the straight (T > 0)
 // points and of the ring (T = 0) points.
 struct KnobSetting {
-  std::string knob;      // "kpoints", "angular", "dispersion", "temperature"
+  std::string knob;      // "kpoints", "angular", "sampling", "dispersion", "temperature"
   std::string label;     // "24", "all", "cutoff:20", "ewald", "300"
   double accuracy = 0;   // larger = more accurate (the knob's reference is the largest)
   bool own = false;      // the scan's own setting
@@ -45,6 +45,11 @@ struct KnobSetting {
 // A bad value is an InputError naming the option ("--kpoints", ...).
 std::vector<KnobSetting> kpointSettings(const std::vector<std::string>& values, int own);
 std::vector<KnobSetting> angularSettings(const std::vector<std::string>& values, int own);
+// Helical k-points of the straight points and ring angular samples together, "K:M" (a bend's
+// rings stand for the straight cell's 2M kappa points, docs/scan-file.md: varying one alone
+// mixes a sampling mismatch into the curve). Accuracy is K.
+std::vector<KnobSetting> samplingSettings(const std::vector<std::string>& values, int ownKpoints,
+                                          int ownAngular);
 std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& values,
                                             const dftb::DispersionSettings& own);
 std::vector<KnobSetting> temperatureSettings(const std::vector<std::string>& values,

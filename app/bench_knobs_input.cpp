@@ -177,6 +177,28 @@ std::vector<KnobSetting> angularSettings(const std::vector<std::string>& values,
   return finish(std::move(listed), make(own));
 }
 
+std::vector<KnobSetting> samplingSettings(const std::vector<std::string>& values, int ownKpoints,
+                                          int ownAngular) {
+  auto make = [](int k, int mu) {
+    return KnobSetting{"sampling", fmt::format("{}:{}", k, mu == 0 ? std::string("all") : std::to_string(mu)),
+                       static_cast<double>(k), false,
+                       [k, mu](dftb::CalculatorSettings& straight, dftb::CalculatorSettings& ring) {
+                         straight.band.helicalKPoints = k;
+                         ring.band.angular.samples = mu;
+                       }};
+  };
+  const std::string expected =
+      "K:M pairs of helical k-points and ring angular samples, e.g. --sampling 12:6,24:12,48:24";
+  std::vector<KnobSetting> listed;
+  for (const std::string& v : values) {
+    const auto colon = v.find(':');
+    if (colon == std::string::npos) throw InputError(kCommandLine, "--sampling", "'" + v + "'", expected);
+    listed.push_back(make(countValue("--sampling", v.substr(0, colon), false, expected),
+                          countValue("--sampling", v.substr(colon + 1), true, expected)));
+  }
+  return finish(std::move(listed), make(ownKpoints, ownAngular));
+}
+
 std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& values,
                                             const dftb::DispersionSettings& own) {
   const double r0 = own.r0 * units::kBohrInAngstrom;

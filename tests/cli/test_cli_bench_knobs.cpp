@@ -172,6 +172,16 @@ TEST_F(BenchKnobs, RingsAtTheScanSettingsReproduceTheCurve) {
             row(r, "angular", "4").at("constant").get<double>());
   // The rings have one kappa point: the knob reaches the straight reference only.
   EXPECT_NE(out.find("only the straight points depend on this knob"), std::string::npos) << out;
+  // Joint sampling (straight kappa points K with ring samples M): the scan's own pair (8:4)
+  // reproduces the curve's constant; another pair changes it; K alone is not a pair.
+  ASSERT_EQ(run("bench knobs bend.toml --sampling 4:2,16:8 --json bend-sampling.json", dir, out), 0)
+      << out;
+  const json j = readJson(dir / "bend-sampling.json");
+  EXPECT_NEAR(row(j, "sampling", "8:4").at("constant").get<double>(), direct, 1e-9 * direct);
+  EXPECT_TRUE(row(j, "sampling", "16:8").at("reference").get<bool>());
+  EXPECT_NE(row(j, "sampling", "4:2").at("constant").get<double>(), direct);
+  EXPECT_NE(run("bench knobs bend.toml --sampling 16", dir, out), 0);
+  EXPECT_NE(out.find("--sampling: found '16'"), std::string::npos) << out;
 }
 
 TEST_F(BenchKnobs, CompareCurveReportsTheOtherScanAndItsTime) {
