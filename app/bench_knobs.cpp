@@ -263,9 +263,10 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
     fig.y.label = "|relative difference| to the reference";
     fig.x.scale = fig.y.scale = plot::Scale::Log10;
     const plot::Marker markers[] = {plot::Marker::Circle, plot::Marker::Square,
-                                    plot::Marker::Triangle, plot::Marker::Diamond};
+                                    plot::Marker::Triangle, plot::Marker::Diamond,
+                                    plot::Marker::Circle};
     int m = 0;
-    for (const char* knob : {"kpoints", "angular", "dispersion", "temperature"}) {
+    for (const char* knob : {"kpoints", "angular", "sampling", "dispersion", "temperature"}) {
       std::vector<double> x, y;
       for (const Row& r : rows)
         if (r.knob == knob && std::isfinite(r.relative) && r.relative != 0 &&
@@ -273,7 +274,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
           x.push_back(r.cpuPerEvaluation), y.push_back(std::abs(r.relative));
       if (x.empty()) continue;
       plot::SeriesStyle style;
-      style.marker = markers[m++ % 4];
+      style.marker = markers[m++ % 5];
       fig.add(knob, x, y, style);
     }
     if (fig.series.empty())

@@ -81,13 +81,14 @@ int runPlateCommand(const PlateOptions& o) {
   writeFile(dir / "plate.json", run.report.dump(2) + "\n");
   std::cout << fmt::format("D1 = {:.6g} eV ({})\n", run.singleLayer * units::kHartreeInEv,
                            run.report["inputs"]["single_layer_rigidity_source"].get<std::string>());
-  std::cout << "  N   D (eV)             bonded (eV)   sliding (eV)  bonded fraction\n";
+  std::cout << "  N   D (eV)             bonded (eV)   sliding (eV)  D/bonded  bonded fraction\n";
   for (const auto& j : run.report["stacks"])
-    std::cout << fmt::format("{:3d}   {:<18} {:<13.6g} {:<13.6g} {}\n", j["layers"].get<int>(),
+    std::cout << fmt::format("{:3d}   {:<18} {:<13.6g} {:<13.6g} {:<9.5f} {}\n", j["layers"].get<int>(),
                              beam::formatWithUncertainty(j["rigidity_eV"].get<double>(), j["uncertainty_eV"].get<double>()),
                              j["bonded_eV"].get<double>(), j["sliding_eV"].get<double>(),
+                             j["ratio_to_bonded"].get<double>(),
                              j["bonded_fraction"].is_null() ? std::string("-")
-                                                            : fmt::format("{:.3g}", j["bonded_fraction"].get<double>()));
+                                                            : fmt::format("{:.4f}", j["bonded_fraction"].get<double>()));
   std::cout << "wrote " << (dir / "plate.json").string() << ", " << png;
   for (const std::string& p : fits) std::cout << ", " << p;
   std::cout << "\n";
