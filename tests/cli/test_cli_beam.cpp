@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -16,6 +15,8 @@
 
 #include "beam/plate.hpp"
 #include "common/plot/png_io.hpp"
+
+#include "cli_run.hpp"
 
 namespace {
 
@@ -32,20 +33,11 @@ struct TempDir {
   }
 };
 
-// Runs the program; returns its exit code and fills `output` with stdout and stderr.
-int run(const std::string& args, const fs::path& log, std::string& output) {
-  const std::string cmd = fmt::format("{} {} > {} 2>&1", MESOCHAIN_BINARY, args, log.string());
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  output = ss.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using mesochain::testing::readJson;
 
-json readJson(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
+// The program in the folder of `log` (absolute paths in args).
+int run(const std::string& args, const fs::path& log, std::string& output) {
+  return mesochain::testing::runMesochain(args, log.parent_path(), output);
 }
 
 // A scan of U = U0 + k x^2 / 2 (1 - x^2 / xa^2) with a deterministic relaxation-like scatter.

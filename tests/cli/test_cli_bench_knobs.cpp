@@ -10,10 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -24,34 +22,20 @@
 #include "beam/scan_table.hpp"
 #include "common/plot/png_io.hpp"
 
+#include "cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+using mesochain::testing::readJson;
+using mesochain::testing::slurp;
+
 int run(const std::string& args, const fs::path& dir, std::string& output) {
-  const fs::path log = dir / "log.txt";
-  const std::string cmd = fmt::format("cd {} && OMP_NUM_THREADS=1 CI=true {} {} > {} 2>&1",
-                                      dir.string(), MESOCHAIN_BINARY, args, log.string());
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  output = ss.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return mesochain::testing::runMesochain(args, dir, output);
 }
 
-json readJson(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 const char* kCnt55 =
     "format = 1\n[builder]\ntype = \"nanotube\"\nn = 5\nm = 5\ncell = \"helical\"\n"
