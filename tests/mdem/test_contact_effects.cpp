@@ -69,7 +69,9 @@ TEST(MdemContactEffects, NeighbourListMatchesBruteForce) {
           ++expected;
           EXPECT_TRUE(listed.count({i, j})) << i << " " << j << " r=" << r;
         }
-        if (sameNear) EXPECT_FALSE(listed.count({i, j}));
+        if (sameNear) {
+          EXPECT_FALSE(listed.count({i, j}));
+        }
       }
     for (const auto& [i, j] : listed)
       EXPECT_LT(s.periodic.minimumImage(b.position[j] - b.position[i]).norm(), range + s.contacts.skin + slack);
