@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <set>
 
@@ -180,12 +181,18 @@ ObjectiveCell startingCell(const ScanSettings& s, const BendSource& b, const Pla
 
 }  // namespace
 
-std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
-                          const ScanSettings& s) {
-  std::string t = "mesochain-scan-1\n";
+namespace {
+// The hashed text: everything that determines a point's result except (since format 2) the
+// list of deformations, so that a scan may be extended (or trimmed) and resumed, reusing its
+// points (reuseCheckpoint). withList: the text of format 1, which included the list.
+std::string hashText(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
+                     const ScanSettings& s, bool withList) {
+  std::string t = withList ? "mesochain-scan-1\n" : "mesochain-scan-2\n";
   t += fmt::format("kind {} direction {}\n", scanKindName(s.kind), bendDirectionName(s.direction));
-  for (double v : s.values) t += fmt::format("value {:.17g}\n", v);
-  for (int n : s.rotationOrders) t += fmt::format("order {}\n", n);
+  if (withList) {
+    for (double v : s.values) t += fmt::format("value {:.17g}\n", v);
+    for (int n : s.rotationOrders) t += fmt::format("order {}\n", n);
+  }
   const RelaxSettings& r = s.relax;
   t += fmt::format("relax {} {:.17g} {} {} {:.17g} {} {:.17g}\n", static_cast<int>(r.algorithm),
                    r.forceTolerance, r.maxSteps, r.relaxTranslation, r.axialTolerance,
@@ -201,7 +208,18 @@ std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSetti
     t += fmt::format("{} {:.17g} {:.17g} {:.17g}\n", cell.speciesOf(a), cell.positions(0, a),
                      cell.positions(1, a), cell.positions(2, a));
   t += "identity " + s.identity + "\n";
-  return fnv1a(t);
+  return t;
+}
+}  // namespace
+
+std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
+                          const ScanSettings& s) {
+  return fnv1a(hashText(cell, c, s, false));
+}
+
+std::string legacyScanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
+                                const ScanSettings& s) {
+  return fnv1a(hashText(cell, c, s, true));
 }
 
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
@@ -242,13 +260,28 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   std::error_code ec;
   if (s.resume && !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath, ec)) {
     ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
-    if (old.inputHash != out.inputHash)
+    // A checkpoint of the older hash (list included) is accepted for the very same list.
+    if (old.inputHash != out.inputHash &&
+        old.inputHash != legacyScanInputHash(cell, calcSettings, s))
       throw InputError(s.checkpointPath, "key input_hash",
                        fmt::format("a checkpoint of another scan input (hash {}, this input {})",
                                    old.inputHash, out.inputHash),
-                       "the checkpoint of this scan: remove it or run without --resume to start "
-                       "afresh");
-    checkpoint.completed = std::move(old.completed);
+                       "the checkpoint of this scan (same settings; the deformation list may "
+                       "differ): remove it or run without --resume to start afresh");
+    // Points are matched by deformation value (bend: ring order) against the plan of this list.
+    std::vector<PlannedPoint> keys;
+    for (const PlanEntry& e : plan) keys.push_back({e.deformation, e.rotationOrder});
+    checkpoint = reuseCheckpoint(std::move(old), keys);
+    checkpoint.inputHash = out.inputHash;
+    out.reused = static_cast<int>(checkpoint.completed.size());
+    out.keptAside = static_cast<int>(checkpoint.keptAside.size());
+    std::cerr << fmt::format("mesochain: resuming {}: {} points reused, {} new", s.checkpointPath,
+                             out.reused, plan.size() - checkpoint.completed.size());
+    if (out.keptAside > 0)
+      std::cerr << fmt::format("; {} completed points not in the list kept aside in the "
+                               "checkpoint (not part of the curve)", out.keptAside);
+    std::cerr << "\n";
+    writeScanCheckpoint(s.checkpointPath, checkpoint, cell);  // in the layout of this list
   }
 
   std::map<int, ScanPoint>& done = checkpoint.completed;

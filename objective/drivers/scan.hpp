@@ -21,8 +21,10 @@
 // rotation order N_a; one translational cell).
 //
 // A checkpoint (JSON) is written atomically (temporary file + rename) after every point; a scan
-// resumed from it skips the completed points (restoring their relaxed atoms for warm starts)
-// and refuses a checkpoint whose input hash differs from the current input.
+// resumed from it skips the completed points whose deformation is in the current list
+// (restoring their relaxed atoms for warm starts), computes the others, keeps the checkpointed
+// points no longer listed aside in the file, and refuses a checkpoint whose input hash (all
+// settings except the deformation list) differs from the current input.
 #include <functional>
 #include <limits>
 #include <memory>
@@ -89,6 +91,8 @@ struct ScanResult {
   std::vector<ScanPoint> points;  // sorted by deformation (reference included)
   bool complete = false;          // false when stopped by stopAfter
   int computed = 0;               // points computed in this call (not restored)
+  int reused = 0;                 // points of the list restored from the checkpoint
+  int keptAside = 0;              // checkpointed points not in the list (kept in the file)
   std::string inputHash;
 };
 
@@ -99,8 +103,14 @@ struct ScanResult {
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
                    const dftb::CalculatorSettings& calculator, const ScanSettings& settings);
 
-// The hash (16 hex digits, FNV-1a 64) of everything that determines the scan's results.
+// The hash (16 hex digits, FNV-1a 64) of everything that determines a point's result: all
+// settings, the cell and the identity, but not the list of deformations.
 std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& calculator,
                           const ScanSettings& settings);
+// The older hash, which included the list of deformations: a checkpoint carrying it is resumed
+// when the list is the same (and rewritten with the current hash).
+std::string legacyScanInputHash(const ObjectiveCell& cell,
+                                const dftb::CalculatorSettings& calculator,
+                                const ScanSettings& settings);
 
 }  // namespace mesochain::objective

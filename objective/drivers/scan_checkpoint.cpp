@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -42,6 +43,34 @@ json pointJson(int index, const ScanPoint& p) {
 
 }  // namespace
 
+ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan) {
+  ScanCheckpoint out;
+  out.inputHash = old.inputHash;
+  out.kind = old.kind;
+  out.planSize = static_cast<int>(plan.size());
+  std::vector<ScanPoint> candidates = std::move(old.keptAside);
+  for (auto& [index, p] : old.completed) {
+    if (index == 0 && !plan.empty())
+      out.completed[0] = std::move(p);  // the reference, whatever the list
+    else
+      candidates.push_back(std::move(p));
+  }
+  const bool bend = old.kind == ScanKind::Bend;
+  for (ScanPoint& p : candidates) {
+    int match = -1;
+    for (int k = 1; k < static_cast<int>(plan.size()) && match < 0; ++k) {
+      const bool same = bend ? p.rotationOrder == plan[k].rotationOrder
+                             : p.deformation == plan[k].deformation;
+      if (same && !out.completed.count(k)) match = k;
+    }
+    if (match >= 0)
+      out.completed[match] = std::move(p);
+    else
+      out.keptAside.push_back(std::move(p));
+  }
+  return out;
+}
+
 void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& c,
                          const ObjectiveCell& /*speciesSource*/) {
   json j;
@@ -52,6 +81,8 @@ void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& c,
   j["plan_size"] = c.planSize;
   j["completed"] = json::array();
   for (const auto& [index, p] : c.completed) j["completed"].push_back(pointJson(index, p));
+  j["kept_aside"] = json::array();
+  for (const ScanPoint& p : c.keptAside) j["kept_aside"].push_back(pointJson(-1, p));
   const std::string tmp = path + ".tmp";
   {
     std::ofstream f(tmp, std::ios::trunc);
@@ -90,7 +121,7 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
              : kind == "bend"  ? ScanKind::Bend
                                : (bad("key kind", kind), ScanKind::Stretch);
     c.planSize = j.at("plan_size").get<int>();
-    for (const json& e : j.at("completed")) {
+    const auto readPoint = [&](const json& e) {
       ScanPoint p;
       const int index = e.at("index").get<int>();
       p.deformation = e.at("deformation").get<double>();
@@ -118,8 +149,14 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
                                                  cj.at("twist_rad").get<double>(),
                                                  cj.at("symmetry_rotation_order").get<int>(),
                                                  path.c_str());
+      return std::make_pair(index, std::move(p));
+    };
+    for (const json& e : j.at("completed")) {
+      auto [index, p] = readPoint(e);
       c.completed[index] = std::move(p);
     }
+    if (j.contains("kept_aside"))
+      for (const json& e : j.at("kept_aside")) c.keptAside.push_back(readPoint(e).second);
   } catch (const json::exception& e) {
     bad("its contents", std::string("a missing or mistyped entry (") + e.what() + ")");
   }

@@ -5,6 +5,7 @@
 // interruption leaves either the previous or the new checkpoint, never half of one.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "objective/drivers/scan.hpp"
 
@@ -15,7 +16,23 @@ struct ScanCheckpoint {
   ScanKind kind = ScanKind::Stretch;
   int planSize = 0;
   std::map<int, ScanPoint> completed;  // plan index -> point (with its relaxed cell)
+  // Completed points whose deformation is no longer in the scan's list: kept (never deleted) so
+  // that a later list holding them again reuses them, but not part of the curve.
+  std::vector<ScanPoint> keptAside;
 };
+
+// What identifies a planned point across deformation lists: stretch and twist points by their
+// deformation value exactly (as written in the checkpoint), bend points by the ring's rotation
+// order. Plan index 0 is the reference (always reused).
+struct PlannedPoint {
+  double deformation = 0.0;
+  int rotationOrder = 0;
+};
+
+// Distributes the points of `old` (completed and kept aside) over the plan of the current
+// list: a point whose key matches plan index k becomes completed[k] of the result; the others
+// become its keptAside. The result carries `old`'s input hash and kind; planSize = plan.size().
+ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan);
 
 // Writes `checkpoint` (species taken from `speciesSource`, which has the cell's atoms).
 void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& checkpoint,

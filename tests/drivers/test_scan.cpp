@@ -1,18 +1,21 @@
 // Deformation scans: a stretch scan agrees with independent relaxations of each strained cell
 // started from the ideal tube; a ring of tiny curvature approaches the straight energy with the
 // expected 1/R^2 law; an interrupted scan resumed from its checkpoint gives the same numbers as
-// an uninterrupted one; a checkpoint of another input is refused.
+// an uninterrupted one; a checkpoint of another input is refused; a finished scan extended by
+// new deformations reuses its points, and points dropped from the list stay in the checkpoint.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/drivers/scan.hpp"
+#include "objective/drivers/scan_checkpoint.hpp"
 #include "objective/drivers/scan_output.hpp"
 
 using namespace mesochain;
@@ -167,8 +170,29 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
     EXPECT_NEAR(rest.points[k].energy, full.points[k].energy, 1e-12);
     EXPECT_EQ(rest.points[k].evaluations, full.points[k].evaluations);
   }
-  // A changed input (another strain list) refuses the checkpoint, naming it.
-  s.values = {0.02, -0.01, 0.015};
+  // A checkpoint of the older hash (which included the list) is resumed for the same list and
+  // rewritten with the current hash; for another list it is refused.
+  {
+    std::ifstream in(path);
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["input_hash"] = legacyScanInputHash(tube, calc, s);
+    std::ofstream(path) << j.dump(1);
+  }
+  const ScanResult legacy = runScan(tube, params, calc, s);
+  EXPECT_EQ(legacy.computed, 0);
+  EXPECT_EQ(legacy.reused, 4);
+  EXPECT_EQ(readScanCheckpoint(path, tube).inputHash, rest.inputHash);
+  {
+    std::ifstream in(path);
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["input_hash"] = legacyScanInputHash(tube, calc, s);
+    std::ofstream(path) << j.dump(1);
+  }
+  s.values = {0.02, -0.01};
+  EXPECT_THROW(runScan(tube, params, calc, s), InputError);
+  s.values = {0.02, -0.01, 0.01};
+  // A changed setting (another force tolerance) refuses the checkpoint, naming it.
+  s.relax.forceTolerance = 2e-5;
   try {
     runScan(tube, params, calc, s);
     FAIL() << "a checkpoint of another input was accepted";
@@ -177,8 +201,126 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
     EXPECT_NE(std::string(e.what()).find("another scan input"), std::string::npos) << e.what();
   }
   // So does a different k-point setting.
-  s.values = {0.02, -0.01, 0.01};
+  s.relax.forceTolerance = 1e-5;
   EXPECT_THROW(runScan(tube, params, settings(20), s), InputError);
+}
+
+namespace {
+const ScanPoint* pointAt(const ScanResult& r, double deformation) {
+  for (const ScanPoint& p : r.points)
+    if (p.deformation == deformation) return &p;
+  return nullptr;
+}
+}  // namespace
+
+TEST(Scan, ExtendedScanReusesItsCheckpointedPoints) {
+  const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
+  const auto params = carbon();
+  const auto calc = settings(16);
+  ScanSettings s = stretchSettings();
+  s.relax.forceTolerance = 1e-5;
+  s.relax.axialTolerance = 1e-5;
+  s.values = {0.01, -0.01};
+  const std::string path = tempPath("extend.json");
+  std::filesystem::remove(path);
+  s.checkpointPath = path;
+  s.resume = true;
+  const ScanResult first = runScan(tube, params, calc, s);
+  ASSERT_TRUE(first.complete);
+  ASSERT_EQ(first.points.size(), 3u);
+  EXPECT_EQ(first.computed, 3);
+  EXPECT_EQ(first.reused, 0);
+
+  // (a) A point between the reference and +1 %: only it is computed, the others are restored.
+  s.values = {0.01, 0.005, -0.01};
+  const ScanResult extended = runScan(tube, params, calc, s);
+  ASSERT_TRUE(extended.complete);
+  EXPECT_EQ(extended.computed, 1);
+  EXPECT_EQ(extended.reused, 3);
+  EXPECT_EQ(extended.keptAside, 0);
+  ASSERT_EQ(extended.points.size(), 4u);
+  EXPECT_EQ(extended.translation0, first.translation0);
+  for (const ScanPoint& p : first.points) {
+    const ScanPoint* q = pointAt(extended, p.deformation);
+    ASSERT_NE(q, nullptr) << p.deformation;
+    EXPECT_EQ(q->energy, p.energy) << p.deformation;
+    EXPECT_EQ(q->evaluations, p.evaluations) << p.deformation;
+  }
+  const ScanPoint* half = pointAt(extended, 0.005);
+  ASSERT_NE(half, nullptr);
+  EXPECT_TRUE(half->converged);
+  EXPECT_NEAR(half->cell.symmetry.translation(), first.translation0 * 1.005, 1e-12);
+  EXPECT_GT(half->energy, pointAt(first, 0.0)->energy);
+  EXPECT_LT(half->energy, pointAt(first, 0.01)->energy);
+
+  // (b) Dropping -1 %: nothing is computed, the curve lacks it, the checkpoint keeps it.
+  s.values = {0.01, 0.005};
+  const ScanResult trimmed = runScan(tube, params, calc, s);
+  EXPECT_TRUE(trimmed.complete);
+  EXPECT_EQ(trimmed.computed, 0);
+  EXPECT_EQ(trimmed.reused, 3);
+  EXPECT_EQ(trimmed.keptAside, 1);
+  EXPECT_EQ(trimmed.points.size(), 3u);
+  EXPECT_EQ(pointAt(trimmed, -0.01), nullptr);
+  const ScanCheckpoint kept = readScanCheckpoint(path, tube);
+  EXPECT_EQ(kept.completed.size(), 3u);
+  ASSERT_EQ(kept.keptAside.size(), 1u);
+  EXPECT_EQ(kept.keptAside[0].deformation, -0.01);
+  EXPECT_EQ(kept.keptAside[0].energy, pointAt(first, -0.01)->energy);
+  // Listed again, it comes back from the kept-aside points without a computation.
+  s.values = {0.01, 0.005, -0.01};
+  const ScanResult again = runScan(tube, params, calc, s);
+  EXPECT_EQ(again.computed, 0);
+  EXPECT_EQ(again.keptAside, 0);
+  ASSERT_EQ(again.points.size(), 4u);
+  EXPECT_EQ(pointAt(again, -0.01)->energy, pointAt(first, -0.01)->energy);
+
+  // (c) A changed setting still refuses the checkpoint.
+  s.relax.forceTolerance = 2e-5;
+  try {
+    runScan(tube, params, calc, s);
+    FAIL() << "a checkpoint with another force tolerance was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("another scan input"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Scan, ExtendedBendScanReusesItsRing) {
+  // (d) Rings of N_a = 400, then 800 and 400: the 400 ring is restored, the gentler 800 ring
+  // (from the straight reference, the planner's neighbour) is computed and lies in between.
+  const ObjectiveCell tube = buildNanotubeTranslational(5, 5, kBond);
+  ScanSettings s;
+  s.kind = ScanKind::Bend;
+  s.rotationOrders = {400};
+  s.ringAngular.samples = 4;
+  s.relax.forceTolerance = 1e-4;
+  s.relax.relaxTranslation = false;
+  s.progressBar = false;
+  const std::string path = tempPath("extend-bend.json");
+  std::filesystem::remove(path);
+  s.checkpointPath = path;
+  s.resume = true;
+  const auto params = carbon();
+  const ScanResult first = runScan(tube, params, settings(8), s);
+  ASSERT_TRUE(first.complete);
+  ASSERT_EQ(first.points.size(), 2u);
+  s.rotationOrders = {800, 400};
+  const ScanResult extended = runScan(tube, params, settings(8), s);
+  ASSERT_TRUE(extended.complete);
+  EXPECT_EQ(extended.computed, 1);
+  EXPECT_EQ(extended.reused, 2);
+  ASSERT_EQ(extended.points.size(), 3u);  // by curvature: straight, 800, 400
+  EXPECT_EQ(extended.points[1].rotationOrder, 800);
+  EXPECT_EQ(extended.points[2].rotationOrder, 400);
+  EXPECT_EQ(extended.points[0].energy, first.points[0].energy);
+  EXPECT_EQ(extended.points[2].energy, first.points[1].energy);
+  EXPECT_EQ(extended.points[2].evaluations, first.points[1].evaluations);
+  EXPECT_GT(extended.points[1].energy, extended.points[0].energy);
+  EXPECT_LT(extended.points[1].energy, extended.points[2].energy);
+  // The bending energy follows 1/R^2: the reused ring and the new one agree on the law.
+  const double e800 = extended.points[1].energy - extended.points[0].energy;
+  const double e400 = extended.points[2].energy - extended.points[0].energy;
+  EXPECT_NEAR(e400 / e800, 4.0, 0.2) << e400 << " " << e800;
 }
 
 TEST(Scan, BadListsAreInputErrors) {
