@@ -35,8 +35,9 @@ void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
   shortTerm_.evaluate(cell, request, out);
   const int n = cell.atomCount();
   const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortRange_->c6());
+  ewald::LatticeSumPlan used;  // the plan the sum ran with, reported without planning again
   if (request.gradient || request.strain) {
-    const auto d = sum_.derivatives(cell, w);
+    const auto d = sum_.derivatives(cell, w, &used);
     out.energy += d.energy;
     if (request.gradient) out.gradient += d.gradient;
     if (request.strain && !cell.symmetry.isRing()) {
@@ -44,9 +45,9 @@ void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
       out.dEdTwist += d.dTwist;
     }
   } else {
-    out.energy += 0.5 * w.cwiseProduct(sum_.matrix(cell)).sum();
+    out.energy += 0.5 * w.cwiseProduct(sum_.matrix(cell, &used)).sum();
   }
-  out.extras["dispersion_ewald_splitting"] = sum_.plan(cell).splitting;
+  out.extras["dispersion_ewald_splitting"] = used.splitting;
 }
 
 }  // namespace mesochain::dftb

@@ -298,27 +298,32 @@ HelicalLatticeSum::HelicalLatticeSum(Kernel kernel, LatticeSumSettings settings)
                      "double precision)");
 }
 
+namespace {
+// The plan as reported: the truncations of `r` plus the reciprocal truncation of the widest pair
+// (largest radii), which costs one long-range pair sum.
+LatticeSumPlan reportedPlan(const Resolved& r, const ObjectiveCell& cell) {
+  LatticeSumPlan p = r.plan;
+  if (cell.symmetry.isRing() || cell.atomCount() == 0) return p;
+  int far = 0;
+  for (int i = 0; i < cell.atomCount(); ++i)
+    if (cell.positions.col(i).head<2>().norm() > cell.positions.col(far).head<2>().norm()) far = i;
+  const Site s = site(cell.positions.col(far));
+  const auto lr = detail::longRangePair(r.setup, s.rho, s.rho, 0, 0, false);
+  p.maxAngularOrder = lr.maxOrder;
+  p.reciprocalTerms = lr.terms;
+  p.quadratureNodes = lr.nodes;
+  return p;
+}
+}  // namespace
+
 LatticeSumPlan HelicalLatticeSum::plan(const ObjectiveCell& cell) const {
-  Resolved r = resolve(kernel_, settings_, cell);
-  if (!cell.symmetry.isRing()) {
-    // Report the reciprocal truncation of the widest pair (largest radii).
-    int far = 0;
-    for (int i = 0; i < cell.atomCount(); ++i)
-      if (cell.positions.col(i).head<2>().norm() > cell.positions.col(far).head<2>().norm()) far = i;
-    if (cell.atomCount() > 0) {
-      const Site s = site(cell.positions.col(far));
-      const auto lr = detail::longRangePair(r.setup, s.rho, s.rho, 0, 0, false);
-      r.plan.maxAngularOrder = lr.maxOrder;
-      r.plan.reciprocalTerms = lr.terms;
-      r.plan.quadratureNodes = lr.nodes;
-    }
-  }
-  return r.plan;
+  return reportedPlan(resolve(kernel_, settings_, cell), cell);
 }
 
-Eigen::MatrixXd HelicalLatticeSum::matrix(const ObjectiveCell& cell) const {
+Eigen::MatrixXd HelicalLatticeSum::matrix(const ObjectiveCell& cell, LatticeSumPlan* used) const {
   const int n = cell.atomCount();
   const Resolved r = resolve(kernel_, settings_, cell);
+  if (used) *used = reportedPlan(r, cell);
   Eigen::MatrixXd phi(n, n);
   for (int i = 0; i < n; ++i)
     for (int j = i; j < n; ++j) phi(i, j) = phi(j, i) = pairSum(kernel_, r, cell, i, j, false).value;
@@ -326,7 +331,8 @@ Eigen::MatrixXd HelicalLatticeSum::matrix(const ObjectiveCell& cell) const {
 }
 
 HelicalLatticeSum::Derivatives HelicalLatticeSum::derivatives(const ObjectiveCell& cell,
-                                                              const Eigen::MatrixXd& w) const {
+                                                              const Eigen::MatrixXd& w,
+                                                              LatticeSumPlan* used) const {
   const int n = cell.atomCount();
   if (w.rows() != n || w.cols() != n)
     throw InputError(kSource, "weights", std::to_string(w.rows()) + " x " + std::to_string(w.cols()),
@@ -339,6 +345,7 @@ HelicalLatticeSum::Derivatives HelicalLatticeSum::derivatives(const ObjectiveCel
                        "otherwise");
   }
   const Resolved r = resolve(kernel_, settings_, cell);
+  if (used) *used = reportedPlan(r, cell);
   Derivatives d;
   d.gradient = Eigen::Matrix3Xd::Zero(3, n);
   for (int i = 0; i < n; ++i)

@@ -29,7 +29,8 @@ struct LatticeSumSettings {
   std::optional<double> splitting;  // Ewald splitting parameter alpha (1/Bohr); auto if empty
 };
 
-// The truncations chosen for one cell (reported by plan(); for benchmarks and tests).
+// The truncations chosen for one cell (reported by plan(), and by matrix() and derivatives()
+// through their optional `used` argument; for benchmarks, tests and reports).
 struct LatticeSumPlan {
   double splitting = 0;       // alpha, 1/Bohr
   double realSpaceCutoff = 0; // Bohr
@@ -47,8 +48,9 @@ class HelicalLatticeSum {
   Kernel kernel() const { return kernel_; }
   const LatticeSumSettings& settings() const { return settings_; }
 
-  // N_o x N_o, symmetric.
-  Eigen::MatrixXd matrix(const objective::ObjectiveCell& cell) const;
+  // N_o x N_o, symmetric. With `used`, also the plan the sum was truncated by (equal to
+  // plan(cell), without planning the cell a second time).
+  Eigen::MatrixXd matrix(const objective::ObjectiveCell& cell, LatticeSumPlan* used = nullptr) const;
 
   struct Derivatives {
     Eigen::Matrix3Xd gradient;   // dE/dx_i (Hartree/Bohr for unit weights)
@@ -58,8 +60,9 @@ class HelicalLatticeSum {
   };
   // Derivatives of E = 1/2 sum_ij w_ij Phi_ij (w symmetric: q q^T for Coulomb, C6_ij for
   // dispersion). Coulomb weights must be neutral (sum_ij w_ij = 0) or an InputError is thrown.
-  Derivatives derivatives(const objective::ObjectiveCell& cell,
-                          const Eigen::MatrixXd& weights) const;
+  // With `used`, also the plan the sum was truncated by (equal to plan(cell)).
+  Derivatives derivatives(const objective::ObjectiveCell& cell, const Eigen::MatrixXd& weights,
+                          LatticeSumPlan* used = nullptr) const;
 
   // E = 1/2 q^T Phi q; for Coulomb the charges must sum to zero (else InputError).
   double energy(const objective::ObjectiveCell& cell, const Eigen::VectorXd& charges) const;

@@ -108,3 +108,32 @@ model = "lj"
   EXPECT_THROW(objective::readCellFile(write("e.toml", "ewald_tolerance = 1e-9\n")), InputError);
   fs::remove_all(dir);
 }
+
+TEST(DispersionEwald, ReportsTheSplittingOfThePlan) {
+  // The term reports the splitting its lattice sum ran with (taken from the sum, not planned
+  // again): equal to a separate plan of the same cell, with and without gradients; none on a ring.
+  const double tol = 1e-9;
+  const EwaldDispersionTerm term(UffLennardJones::carbonDefaults(30.0), tol);
+  ewald::LatticeSumSettings st;
+  st.tolerance = tol;
+  const ewald::HelicalLatticeSum sum(ewald::Kernel::InverseSixth, st);
+  for (const auto& cell : {twoAtomHelix(4.6, 0.52, 5), twoAtomHelix(7.9, 0.0, 1)}) {
+    const double expected = sum.plan(cell).splitting;
+    EXPECT_GT(expected, 0);
+    for (const dftb::EvaluationRequest request : {dftb::EvaluationRequest{false, false},
+                                                  dftb::EvaluationRequest{true, true}}) {
+      dftb::TermOutput out;
+      if (request.gradient) out.gradient = Eigen::Matrix3Xd::Zero(3, cell.atomCount());
+      term.evaluate(cell, request, out);
+      ASSERT_EQ(out.extras.count("dispersion_ewald_splitting"), 1u);
+      EXPECT_EQ(out.extras.at("dispersion_ewald_splitting"), expected);
+    }
+  }
+  objective::ObjectiveCell ring;
+  ring.symmetry = objective::Symmetry::ring(60);
+  ring.addAtom("C", {40.0, 0.3, 0.1});
+  ring.addAtom("C", {41.5, 2.6, 1.4});
+  dftb::TermOutput out;
+  term.evaluate(ring, {}, out);
+  EXPECT_EQ(out.extras.at("dispersion_ewald_splitting"), 0.0);
+}
