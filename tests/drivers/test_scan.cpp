@@ -45,6 +45,18 @@ ScanSettings stretchSettings() {
   return s;
 }
 
+// Rings of a straight cell: 4 angular samples, 1e-4 Ha/Bohr, the cell's T kept.
+ScanSettings ringSettings(std::vector<int> rotationOrders) {
+  ScanSettings s;
+  s.kind = ScanKind::Bend;
+  s.rotationOrders = std::move(rotationOrders);
+  s.ringAngular.samples = 4;
+  s.relax.forceTolerance = 1e-4;
+  s.relax.relaxTranslation = false;
+  s.progressBar = false;
+  return s;
+}
+
 std::string tempPath(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / "mesochain-scan-test";
   std::filesystem::create_directories(dir);
@@ -289,13 +301,7 @@ TEST(Scan, ExtendedBendScanReusesItsRing) {
   // (d) Rings of N_a = 400, then 800 and 400: the 400 ring is restored, the gentler 800 ring
   // (from the straight reference, the planner's neighbour) is computed and lies in between.
   const ObjectiveCell tube = buildNanotubeTranslational(5, 5, kBond);
-  ScanSettings s;
-  s.kind = ScanKind::Bend;
-  s.rotationOrders = {400};
-  s.ringAngular.samples = 4;
-  s.relax.forceTolerance = 1e-4;
-  s.relax.relaxTranslation = false;
-  s.progressBar = false;
+  ScanSettings s = ringSettings({400});
   const std::string path = tempPath("extend-bend.json");
   std::filesystem::remove(path);
   s.checkpointPath = path;
@@ -364,13 +370,7 @@ TEST(Scan, SoftAndHardRingsOfARoundTubeAgree) {
   // The (8,0) cross-section is invariant under a quarter turn (C_8), so bending it about
   // perpendicular axes gives the same ring.
   const ObjectiveCell tube = buildNanotubeTranslational(8, 0, kBond);
-  ScanSettings s;
-  s.kind = ScanKind::Bend;
-  s.rotationOrders = {64};
-  s.ringAngular.samples = 4;
-  s.relax.forceTolerance = 1e-4;
-  s.relax.relaxTranslation = false;
-  s.progressBar = false;
+  ScanSettings s = ringSettings({64});
   const ScanResult soft = runScan(tube, carbon(), settings(8), s);
   s.direction = BendDirection::Hard;
   const ScanResult hard = runScan(tube, carbon(), settings(8), s);
