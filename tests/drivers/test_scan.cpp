@@ -64,6 +64,16 @@ std::string tempPath(const std::string& name) {
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }
+
+// Resumes `s` from a fresh checkpoint NAME in the temporary folder (an old file removed);
+// returns the checkpoint's path.
+std::string resumeFromFreshCheckpoint(ScanSettings& s, const std::string& name) {
+  const std::string path = tempPath(name);
+  std::filesystem::remove(path);
+  s.checkpointPath = path;
+  s.resume = true;
+  return path;
+}
 }  // namespace
 
 TEST(Scan, StretchMatchesIndependentRelaxations) {
@@ -161,10 +171,7 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
   s.relax.forceTolerance = 1e-5;
   s.relax.axialTolerance = 1e-5;
   const ScanResult full = runScan(tube, params, calc, s);
-  const std::string path = tempPath("resume.json");
-  std::filesystem::remove(path);
-  s.checkpointPath = path;
-  s.resume = true;
+  const std::string path = resumeFromFreshCheckpoint(s, "resume.json");
   s.stopAfter = 2;
   const ScanResult part = runScan(tube, params, calc, s);
   EXPECT_FALSE(part.complete);
@@ -235,10 +242,7 @@ TEST(Scan, ExtendedScanReusesItsCheckpointedPoints) {
   s.relax.forceTolerance = 1e-5;
   s.relax.axialTolerance = 1e-5;
   s.values = {0.01, -0.01};
-  const std::string path = tempPath("extend.json");
-  std::filesystem::remove(path);
-  s.checkpointPath = path;
-  s.resume = true;
+  const std::string path = resumeFromFreshCheckpoint(s, "extend.json");
   const ScanResult first = runScan(tube, params, calc, s);
   ASSERT_TRUE(first.complete);
   ASSERT_EQ(first.points.size(), 3u);
@@ -304,10 +308,7 @@ TEST(Scan, ExtendedBendScanReusesItsRing) {
   // (from the straight reference, the planner's neighbour) is computed and lies in between.
   const ObjectiveCell tube = buildNanotubeTranslational(5, 5, kBond);
   ScanSettings s = ringSettings({400});
-  const std::string path = tempPath("extend-bend.json");
-  std::filesystem::remove(path);
-  s.checkpointPath = path;
-  s.resume = true;
+  const std::string path = resumeFromFreshCheckpoint(s, "extend-bend.json");
   const auto params = carbon();
   const ScanResult first = runScan(tube, params, settings(8), s);
   ASSERT_TRUE(first.complete);
