@@ -65,18 +65,6 @@ struct Row {
   std::string note;
 };
 
-// The constant a curve of this kind gives (as `mesochain beam` names it).
-struct Quantity {
-  std::string name, key, unit;
-};
-
-Quantity quantityOf(const beam::ScanCurve& c) {
-  if (c.kind == "stretch") return {"C", "C_hartree", "Ha"};
-  if (c.kind == "twist") return {"K", "K_hartree_per_rad2", "Ha/rad^2"};
-  if (c.direction == "hard") return {"D_h", "D_hard_hartree_bohr2", "Ha Bohr^2"};
-  return {"D_s", "D_soft_hartree_bohr2", "Ha Bohr^2"};
-}
-
 double cpuSeconds() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
@@ -122,7 +110,7 @@ void fitInto(Row& row, beam::ScanCurve curve, const std::vector<double>* energie
              const KnobsOptions& o) {
   if (energies)
     for (std::size_t k = 0; k < curve.points.size(); ++k) curve.points[k].energy = (*energies)[k];
-  const Quantity q = quantityOf(curve);
+  const beam::CurveConstant q = beam::curveConstant(curve);
   try {
     const beam::FittedCurve fc =
         beam::fitScanCurve(curve, q.name, q.key, o.tolerance, o.linearTerm, o.measuredCurvature);
@@ -257,7 +245,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
     // load of a shared machine; with several threads, their sum), one series per knob.
     // The reference of each knob (0) cannot sit on a log axis. Whole-scan comparisons
     // (relaxation) are left to the table: their cost is in the number of evaluations.
-    plot::Figure fig(fmt::format("{}: {} of {}", "bench knobs", quantityOf(f.curve).name,
+    plot::Figure fig(fmt::format("{}: {} of {}", "bench knobs", beam::curveConstant(f.curve).name,
                                  std::filesystem::path(f.input.source).filename().string()));
     fig.x.label = "CPU time per energy evaluation (s)";
     fig.y.label = "|relative difference| to the reference";
@@ -423,7 +411,7 @@ int benchKnobs(const KnobsOptions& o) {
     markReference(rows, first);
   }
 
-  const Quantity q = quantityOf(f.curve);
+  const beam::CurveConstant q = beam::curveConstant(f.curve);
   const CurveCost scanCost = curveCost(f.input.jsonPath);
   std::cout << fmt::format(
       "{} scan {} ({}): {} points, {} atoms per cell, {} cell(s) per slice; relaxed in {} "

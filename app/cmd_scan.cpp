@@ -38,13 +38,9 @@ struct ScanOptions {
 // else the points alone and the fitter's reason on stderr (e.g. too few points so far).
 void writeScanPlot(const std::string& jsonPath, const std::string& pngPath) {
   const beam::ScanCurve curve = beam::readScanTable(jsonPath);
-  std::string quantity = "C", key = "C_hartree";
-  if (curve.kind == "twist") quantity = "K", key = "K_hartree_per_rad2";
-  if (curve.kind == "bend")
-    quantity = curve.direction == "hard" ? "D_h" : "D_s",
-    key = curve.direction == "hard" ? "D_hard_hartree_bohr2" : "D_soft_hartree_bohr2";
+  const beam::CurveConstant q = beam::curveConstant(curve);
   try {
-    beam::writeFitPlot(beam::fitScanCurve(curve, quantity, key, 0.02, "auto", false), pngPath);
+    beam::writeFitPlot(beam::fitScanCurve(curve, q.name, q.key, 0.02, "auto", false), pngPath);
     std::cerr << "wrote " << pngPath << " (curve with its quadratic fit)\n";
     return;
   } catch (const InputError& e) {

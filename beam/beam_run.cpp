@@ -23,10 +23,12 @@ constexpr std::array<const char*, 4> kNames = {"C", "K", "D_s", "D_h"};
 constexpr std::array<const char*, 4> kKeys = {"C_hartree", "K_hartree_per_rad2", "D_soft_hartree_bohr2",
                                               "D_hard_hartree_bohr2"};
 
+// The slot of the constant a curve gives (curveConstant decides which).
 int slotOf(const ScanCurve& c) {
-  if (c.kind == "stretch") return 0;
-  if (c.kind == "twist") return 1;
-  return c.direction == "soft" ? 2 : 3;
+  const std::string key = curveConstant(c).key;
+  int s = 0;
+  while (s < 3 && key != kKeys[s]) ++s;
+  return s;
 }
 
 double& slot(BeamConstants& c, int i) {

@@ -233,4 +233,11 @@ std::vector<std::string> scanFilesIn(const std::string& directory) {
   return files;
 }
 
+CurveConstant curveConstant(const ScanCurve& c) {
+  if (c.kind == "stretch") return {"C", "C_hartree", "Ha"};
+  if (c.kind == "twist") return {"K", "K_hartree_per_rad2", "Ha/rad^2"};
+  if (c.direction == "hard") return {"D_h", "D_hard_hartree_bohr2", "Ha Bohr^2"};
+  return {"D_s", "D_soft_hartree_bohr2", "Ha Bohr^2"};
+}
+
 }  // namespace mesochain::beam

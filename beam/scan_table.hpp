@@ -41,6 +41,13 @@ struct ScanCurve {
   std::string label() const { return direction.empty() ? kind : kind + " " + direction; }
 };
 
+// The constant a curve gives, as `mesochain beam` names it: its symbol (C, K, D_s, D_h), the
+// key of beam.json (Hartree units) and the unit.
+struct CurveConstant {
+  std::string name, key, unit;
+};
+CurveConstant curveConstant(const ScanCurve& curve);
+
 // By extension: .json or .csv. Missing files, syntax errors and bad values are InputErrors
 // naming the file and the key (or line).
 ScanCurve readScanTable(const std::string& path);

@@ -96,6 +96,9 @@ TEST(BeamRun, ScanTablesGiveBackTheRectangle) {
   EXPECT_GT(uY, 0.0);
   EXPECT_LT(uY, 0.1 * rep["beam"]["young_modulus_GPa"].get<double>());
   EXPECT_DOUBLE_EQ(rep["brick"]["mass_dalton"].get<double>(), 5 * 120 * 12.011);
+  // curveConstant names the constant each curve was fitted into (the key of beam.json).
+  for (const ScanCurve& c : in.curves)
+    EXPECT_EQ(rep["constants"][curveConstant(c).key]["source"], c.source) << c.label();
 
   // The closure asked for is the one used.
   in.closure = "measured_thickness";
