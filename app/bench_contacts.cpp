@@ -143,7 +143,7 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
   s.run.timeStep = 2e-5;  // one step for all runs (below the critical 2.9e-5 ns with dashpots)
   mdem::Simulation sim(s);
   ZippingResult r;
-  const double vdw0 = sim.energies().vdw, deg = mdem::units::kPi / 180.0;
+  const double vdw0 = sim.energies()["vdw"], deg = mdem::units::kPi / 180.0;
   const long every = 50;  // 1 ps
   double minVdw = vdw0;
   auto track = [&](double& since, bool ok) {
@@ -152,16 +152,16 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
   };
   while (sim.time() < o.maxTime) {
     sim.run(every);
-    const mdem::Energies e = sim.energies();
-    minVdw = std::min(minVdw, e.vdw);
+    const mdem::EnergyLedger e = sim.energies();
+    minVdw = std::min(minVdw, e["vdw"]);
     const double a = crossingAngle(sim.bodies(), n);
     track(r.aligned10, a < 10 * deg);
     track(r.aligned3, a < 3 * deg);
-    track(r.rest, e.kineticTranslational + e.kineticRotational < o.restKinetic);
+    track(r.rest, e.kinetic() < o.restKinetic);
   }
-  const mdem::Energies e = sim.energies();
+  const mdem::EnergyLedger e = sim.energies();
   r.finalAngleDeg = crossingAngle(sim.bodies(), n) / deg;
-  r.vdw = e.vdw;
+  r.vdw = e["vdw"];
   r.released = vdw0 - minVdw;
   return r;
 }

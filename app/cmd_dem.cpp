@@ -50,17 +50,18 @@ Command makeDemCommand() {
     if (!opt->quiet) progress = drawProgress;
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress);
     if (!opt->quiet) std::fprintf(stderr, "\n");
-    const mdem::Energies& e = r.finalEnergies;
+    const mdem::EnergyLedger& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",
         scene.bodies.size(), r.steps, r.timeStep, r.criticalTimeStep, r.time,
         r.stoppedByCriterion ? ", stopped: kinetic energy below threshold" : "");
-    std::cout << fmt::format(
-        "energies (zJ): kinetic {:.8g} + {:.8g} (rot), stretching {:.8g}, shearing {:.8g}, "
-        "twisting {:.8g}, bending {:.8g}, van der Waals {:.8g}, total {:.8g}{}; outputs in {}\n",
-        e.kineticTranslational, e.kineticRotational, e.bonds.stretching, e.bonds.shearing,
-        e.bonds.twisting, e.bonds.bending, e.vdw, e.total(),
-        r.dissipatedTracked ? fmt::format(" (dissipated by dashpots {:.8g})", e.contactDissipated) : "", dir);
+    std::string stored, dissipated;
+    for (const mdem::LedgerEntry& x : e.entries()) {
+      std::string& to = x.kind == mdem::EnergyKind::Dissipated ? dissipated : stored;
+      to += fmt::format("{}{} {:.8g}", to.empty() ? "" : ", ", x.name == "vdw" ? "van der Waals" : x.name, x.value);
+    }
+    std::cout << fmt::format("energies (zJ): {}, total {:.8g}{}; outputs in {}\n", stored, e.total(),
+                             dissipated.empty() ? "" : " (dissipated: " + dissipated + ")", dir);
     if (r.tensile)
       std::cout << fmt::format("tensile: strain {:.6g}, stress {:.6g} MPa (peak {:.6g} MPa, at zero strain {:.6g} MPa), "
                                "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",

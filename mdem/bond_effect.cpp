@@ -1,6 +1,14 @@
 #include "mdem/bond_effect.hpp"
 
+#include "mdem/binary_io.hpp"
+#include "mdem/effect_registry.hpp"
+#include "mdem/scene.hpp"
+
 namespace mesochain::mdem {
+
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "bonds", 100, "parallel bonds between elements (parallel_bond.hpp)", true, nullptr,
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<BondEffect>(b.scene.bonds, b.scene.bodies.size()); }})
 
 BondEffect::BondEffect(std::vector<Bond> bonds, int elementCount)
     : bonds_(std::move(bonds)), results_(bonds_.size()), start_(elementCount + 1, 0) {
@@ -11,18 +19,6 @@ BondEffect::BondEffect(std::vector<Bond> bonds, int elementCount)
   for (int k = 0; k < static_cast<int>(bonds_.size()); ++k) {
     incident_[fill[bonds_[k].a]++] = 2 * k;
     incident_[fill[bonds_[k].b]++] = 2 * k + 1;
-  }
-}
-
-void BondEffect::addForces(State& state) {
-  Bodies& s = state.bodies;
-  const int nb = size();
-#pragma omp parallel if (nb > 512)
-  {
-#pragma omp for schedule(static)
-    for (int k = 0; k < nb; ++k) computeBond(s, k);
-#pragma omp for schedule(static)
-    for (int i = 0; i < s.size(); ++i) gather(i, s.force[i], s.torque[i]);
   }
 }
 
@@ -38,10 +34,23 @@ std::vector<BondEnergy> BondEffect::bondEnergies(const State& state) const {
   return out;
 }
 
-Energies BondEffect::energy(const State& state) const {
-  Energies e;
-  for (const BondEnergy& b : bondEnergies(state)) e.bonds += b;
-  return e;
+void BondEffect::reportEnergy(const State& state, EnergyLedger& ledger) const {
+  BondEnergy e;
+  for (const BondEnergy& b : bondEnergies(state)) e += b;
+  ledger.add("stretching", EnergyKind::Potential, e.stretching);
+  ledger.add("shearing", EnergyKind::Potential, e.shearing);
+  ledger.add("twisting", EnergyKind::Potential, e.twisting);
+  ledger.add("bending", EnergyKind::Potential, e.bending);
+}
+
+void BondEffect::saveState(BinaryWriter& out) const {
+  out.write<std::uint64_t>(bonds_.size());
+  for (const Bond& b : bonds_) out.write(b.theta);
+}
+
+void BondEffect::loadState(BinaryReader& in) {
+  in.expectCount("bonds", bonds_.size());
+  for (Bond& b : bonds_) b.theta = in.read<Vec3>();
 }
 
 }  // namespace mesochain::mdem

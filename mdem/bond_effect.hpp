@@ -1,9 +1,9 @@
 #pragma once
-// Effect "bonds": all parallel bonds of the scene. Bond kernels run in parallel over bonds into
-// a per-bond buffer (computeBond), then each element gathers its bonds' contributions in a
-// fixed order (gather), so results do not depend on the number of OpenMP threads. The two
-// halves are public so that the fused time step (stepper.hpp) can run them inside its own
-// parallel region.
+// Effect "bonds": all parallel bonds of the scene (parallel_bond.hpp). Items are the bonds: each
+// bond kernel writes its forces and torques into a per-bond buffer (computeBond), then each
+// element gathers its bonds' contributions in a fixed order (gatherElement), so results do not
+// depend on the number of OpenMP threads. Bonds join elements of one filament only, so a scene
+// of separate filaments may run barrier-free (stepper.hpp).
 #include <vector>
 
 #include "mdem/effect.hpp"
@@ -15,8 +15,24 @@ class BondEffect : public Effect {
  public:
   BondEffect(std::vector<Bond> bonds, int elementCount);
   std::string name() const override { return "bonds"; }
-  void addForces(State& state) override;
-  Energies energy(const State& state) const override;
+
+  int itemCount() const override { return size(); }
+  void computeItems(const State& state, double, int lo, int hi) override {
+    for (int k = lo; k < hi; ++k) computeBond(state.bodies, k);
+  }
+  void computeItemList(const State& state, double, const int* items, int count) override {
+    for (int e = 0; e < count; ++e) computeBond(state.bodies, items[e]);
+  }
+  int itemElement(int k) const override { return bonds_[k].a; }
+  void gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const override {
+    for (int i = lo; i < hi; ++i) gatherElement(i, force[i], torque[i]);
+  }
+  // Entries "stretching", "shearing", "twisting", "bending".
+  void reportEnergy(const State& state, EnergyLedger& ledger) const override;
+  const std::vector<Bond>* bondList() const override { return &bonds_; }
+  // The tracked twist branch of every bond.
+  void saveState(BinaryWriter& out) const override;
+  void loadState(BinaryReader& in) override;
 
   const std::vector<Bond>& bonds() const { return bonds_; }
   int size() const { return static_cast<int>(bonds_.size()); }
@@ -29,7 +45,7 @@ class BondEffect : public Effect {
     results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
   }
   // Adds the buffered forces and torques of element i's bonds (in a fixed order).
-  void gather(int i, Vec3& force, Vec3& torque) const {
+  void gatherElement(int i, Vec3& force, Vec3& torque) const {
     for (int e = start_[i]; e < start_[i + 1]; ++e) {
       const Wrench& r = results_[incident_[e] >> 1];
       if (incident_[e] & 1) {

@@ -3,9 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mdem/effect_registry.hpp"
+#include "mdem/scene.hpp"
 #include "mdem/units.hpp"
 
 namespace mesochain::mdem {
+
+// Not listed by name: applied whenever the scene has [[loads]].
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "loads", 300, "forces and moments applied to elements ([[loads]])", false,
+    [](const Scene& s) { return !s.boundary.loads.empty(); },
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<LoadEffect>(b.scene.boundary.loads, b.scene.bodies); }})
 
 namespace {
 double rampFactor(double t, double ramp) { return ramp > 0.0 ? std::min(1.0, t / ramp) : 1.0; }
@@ -132,23 +140,17 @@ void LoadEffect::addToElement(const Bodies& s, int i, double time, Vec3& force,
   }
 }
 
-void LoadEffect::addForces(State& state) {
-  Bodies& s = state.bodies;
-  for (int i : loadedElements_) addToElement(s, i, state.time, s.force[i], s.torque[i]);
-}
-
-Energies LoadEffect::energy(const State& state) const {
+void LoadEffect::reportEnergy(const State& state, EnergyLedger& ledger) const {
   // Potential of fixed-direction loads once fully applied: -F.u - M.phi, with phi the
   // accumulated rotation (exact for rotation about a fixed axis). Following loads: 0.
-  Energies e;
+  double e = 0.0;
   const Bodies& s = state.bodies;
   for (const Load& l : loads_) {
     if (l.following || rampFactor(state.time, l.ramp) < 1.0) continue;
     const int i = l.element;
-    e.loadPotential -= l.force.dot(s.position[i] - s.initialPosition[i]) +
-                       l.moment.dot(s.accumulatedRotation[i]);
+    e -= l.force.dot(s.position[i] - s.initialPosition[i]) + l.moment.dot(s.accumulatedRotation[i]);
   }
-  return e;
+  ledger.add("load_potential", EnergyKind::Potential, e);
 }
 
 }  // namespace mesochain::mdem

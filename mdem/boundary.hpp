@@ -1,8 +1,8 @@
 #pragma once
 // Boundary conditions: fixed degrees of freedom, applied loads and prescribed motions.
 // Fixed DOFs and prescribed motions are kinematic: the integrator overwrites the velocities
-// after each half kick (KinematicMap::apply). Loads are an effect (LoadEffect), built whenever the
-// scene has loads.
+// after each half kick (KinematicMap::apply). Loads are an effect (LoadEffect, registered as "loads"),
+// built whenever the scene has loads.
 #include <array>
 #include <vector>
 
@@ -93,8 +93,12 @@ class LoadEffect : public Effect {
  public:
   LoadEffect(std::vector<Load> loads, const Bodies& initial);
   std::string name() const override { return "loads"; }
-  void addForces(State& state) override;
-  Energies energy(const State& state) const override;
+  void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const override {
+    for (int i = lo; i < hi; ++i)
+      if (start_[i] < start_[i + 1]) addToElement(state.bodies, i, time, force[i], torque[i]);
+  }
+  // Entry "load_potential".
+  void reportEnergy(const State& state, EnergyLedger& ledger) const override;
   // Adds the loads on element i at `time` to force / torque (in load order).
   void addToElement(const Bodies& s, int i, double time, Vec3& force, Vec3& torque) const;
 

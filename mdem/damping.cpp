@@ -1,6 +1,16 @@
 #include "mdem/damping.hpp"
 
+#include "mdem/effect_registry.hpp"
+#include "mdem/scene.hpp"
+
 namespace mesochain::mdem {
+
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "local_damping", 500, "Cundall's local non-viscous damping of each DOF ([local_damping] alpha)", true, nullptr,
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<LocalDamping>(b.scene.localDampingAlpha); }})
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "viscous_damping", 510, "mass-proportional drag ([viscous_damping] rate_per_ns)", true, nullptr,
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<ViscousDamping>(b.scene.viscousRate); }})
 
 namespace {
 inline double sign(double v) { return (v > 0.0) - (v < 0.0); }
@@ -15,22 +25,10 @@ void LocalDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque
   torque = rotate(s.orientation[i], tb);
 }
 
-void LocalDamping::addForces(State& state) {
-  Bodies& s = state.bodies;
-#pragma omp parallel for schedule(static) if (s.size() > 512)
-  for (int i = 0; i < s.size(); ++i) dampElement(s, i, s.force[i], s.torque[i]);
-}
-
 void ViscousDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const {
   force -= rate_ * s.mass[i] * s.velocity[i];
   // I omega_body is the body angular momentum.
   torque -= rate_ * rotate(s.orientation[i], s.angularMomentumBody[i]);
-}
-
-void ViscousDamping::addForces(State& state) {
-  Bodies& s = state.bodies;
-#pragma omp parallel for schedule(static) if (s.size() > 512)
-  for (int i = 0; i < s.size(); ++i) dampElement(s, i, s.force[i], s.torque[i]);
 }
 
 }  // namespace mesochain::mdem

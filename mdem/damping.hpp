@@ -1,6 +1,6 @@
 #pragma once
-// Dissipative effects. Both act on the force already accumulated by the conservative effects and
-// loads, so the simulation builds them last.
+// Numerical damping effects (EffectRole::NumericalDamping). Both act on the force already
+// accumulated by the conservative effects and loads, so they are registered last (order 500).
 //
 // "local_damping" (Cundall's local non-viscous damping, as in PFC; Potyondy & Cundall 2004,
 // eq. 8): per degree of freedom F_i -= alpha |F_i| sign(v_i), M_i -= alpha |M_i| sign(omega_i).
@@ -17,10 +17,13 @@ class LocalDamping : public Effect {
  public:
   explicit LocalDamping(double alpha) : alpha_(alpha) {}
   std::string name() const override { return "local_damping"; }
-  void addForces(State& state) override;
+  EffectRole role() const override { return EffectRole::NumericalDamping; }
+  void gather(const State& state, double, int lo, int hi, Vec3* force, Vec3* torque) const override {
+    for (int i = lo; i < hi; ++i) dampElement(state.bodies, i, force[i], torque[i]);
+  }
   // Damps the force / torque of element i (the sum of the other effects on it).
   void dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const;
-  Energies energy(const State&) const override { return {}; }
+  void reportEnergy(const State&, EnergyLedger&) const override {}
 
  private:
   double alpha_;
@@ -30,9 +33,12 @@ class ViscousDamping : public Effect {
  public:
   explicit ViscousDamping(double rate) : rate_(rate) {}
   std::string name() const override { return "viscous_damping"; }
-  void addForces(State& state) override;
+  EffectRole role() const override { return EffectRole::NumericalDamping; }
+  void gather(const State& state, double, int lo, int hi, Vec3* force, Vec3* torque) const override {
+    for (int i = lo; i < hi; ++i) dampElement(state.bodies, i, force[i], torque[i]);
+  }
   void dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const;
-  Energies energy(const State&) const override { return {}; }
+  void reportEnergy(const State&, EnergyLedger&) const override {}
 
  private:
   double rate_;

@@ -1,15 +1,38 @@
 #pragma once
-// The engine is a list of effect objects built from the scene's `effects` list (plus the loads
-// when the scene has any). Each effect adds its forces and torques to the state and reports its
-// energy; an effect that is not named has no object and costs no loop. Contacts will plug in
-// the same way.
+// The seam of the engine: an effect (bonds, contacts, loads, damping, ...) is a small unit that
+// declares its name, registers itself (effect_registry.hpp), computes its forces in phases the
+// stepper drives inside its one parallel region, and reports its energies into the ledger. The
+// engine knows no effect by name: it builds whatever the scene names, in registration order,
+// and an effect that is not named has no object and costs no loop.
+//
+// One force evaluation at time t (positions and velocities of time t) runs, for the effects in
+// their order:
+//   prepare(t)                  serial, once (effects with hasPrepare()): e.g. refresh a
+//                               neighbour list;
+//   computeItems(t, lo, hi)     per item (bond, contact pair) into the effect's own buffer,
+//                               items split between threads; an item writes only its own slot;
+//   gather(t, lo, hi, F, M)     per element: adds the element's share of every item to the
+//                               accumulated force F[i] / torque M[i] of elements [lo, hi), in a
+//                               fixed order. Effects gather in their order, so a damping effect
+//                               sees (and acts on) the sum of those before it;
+//   finish(t)                   serial, once (effects with hasFinish()): e.g. charge the work
+//                               dissipated since the last evaluation.
+// Sums are formed per element in a fixed order, so results do not depend on the number of
+// threads. Units: mdem/units.hpp.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "mdem/body.hpp"
+#include "mdem/energy_ledger.hpp"
 #include "mdem/parallel_bond.hpp"
 
 namespace mesochain::mdem {
+
+class BinaryWriter;
+class BinaryReader;
+struct ContactStabilityTerms;
+class ContactNeighbourhood;
 
 // What the integrator advances and effects act on.
 struct State {
@@ -17,38 +40,53 @@ struct State {
   double time = 0.0;  // ns
 };
 
-// Energies (zJ) by kind. Kinetic terms are filled by the simulation, the rest by effects.
-struct Energies {
-  double kineticTranslational = 0.0;
-  double kineticRotational = 0.0;
-  BondEnergy bonds;
-  double loadPotential = 0.0;  // -F.u - M.theta of fixed-direction loads (0 for others)
-  double vdw = 0.0;            // van der Waals contacts between elements (mdem/contacts)
-  // Work dissipated so far by the contact dashpots (zJ, >= 0): not stored energy, so not part of
-  // total(); total() + contactDissipated is conserved without other damping.
-  double contactDissipated = 0.0;
-
-  double potential() const { return bonds.total() + loadPotential + vdw; }
-  double total() const { return kineticTranslational + kineticRotational + potential(); }
-  Energies& operator+=(const Energies& o) {
-    kineticTranslational += o.kineticTranslational;
-    kineticRotational += o.kineticRotational;
-    bonds += o.bonds;
-    loadPotential += o.loadPotential;
-    vdw += o.vdw;
-    contactDissipated += o.contactDissipated;
-    return *this;
-  }
-};
+// Physical effects model the material; numerical damping (local / viscous) only drives a
+// relaxation: it is left out of residuals, of grip reactions and of the energy balance.
+enum class EffectRole { Physical, NumericalDamping };
 
 class Effect {
  public:
   virtual ~Effect() = default;
   virtual std::string name() const = 0;
-  // Adds forces and torques (world frame) to state.bodies.force / torque.
-  virtual void addForces(State& state) = 0;
-  // Energy stored by this effect in the current state (zero for dissipative effects).
-  virtual Energies energy(const State& state) const = 0;
+  virtual EffectRole role() const { return EffectRole::Physical; }
+
+  virtual bool hasPrepare() const { return false; }
+  virtual void prepare(const State& /*state*/, double /*time*/) {}
+
+  virtual int itemCount() const { return 0; }
+  virtual void computeItems(const State& /*state*/, double /*time*/, int /*lo*/, int /*hi*/) {}
+  // Items join elements of different filaments (contacts). When no effect does, and each item
+  // belongs to one element (itemElement), the stepper may advance separate filaments on
+  // separate threads with no barrier (stepper.hpp, ThreadPartition).
+  virtual bool couplesFilaments() const { return false; }
+  virtual int itemElement(int /*k*/) const { return -1; }
+  virtual void computeItemList(const State& state, double time, const int* items, int count) {
+    for (int e = 0; e < count; ++e) computeItems(state, time, items[e], items[e] + 1);
+  }
+
+  virtual void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const = 0;
+
+  virtual bool hasFinish() const { return false; }
+  virtual void finish(const State& /*state*/, double /*time*/) {}
+
+  // The energies of the current state (stored, or dissipated so far) into the ledger. Called at
+  // outputs, not per step.
+  virtual void reportEnergy(const State& state, EnergyLedger& ledger) const = 0;
+
+  // Contributions to the critical time step beyond the bonds' (stability.hpp): per element type.
+  virtual void addStabilityTerms(std::vector<ContactStabilityTerms>& /*perType*/) const {}
+  // Capabilities other parts of the engine may use (null when the effect has none).
+  virtual const std::vector<Bond>* bondList() const { return nullptr; }
+  virtual const ContactNeighbourhood* contactNeighbourhood() const { return nullptr; }
+
+  // Evolving state that determines the future (tracked twist branches, dissipated work,
+  // neighbour list), for checkpoints: what saveState writes, loadState reads back bit for bit.
+  virtual void saveState(BinaryWriter& /*out*/) const {}
+  virtual void loadState(BinaryReader& /*in*/) {}
+
+  // All phases of this effect alone, serially, adding to state.bodies.force / torque at
+  // state.time (tests and benchmarks that look at one effect).
+  void addForces(State& state);
 };
 
 using EffectPtr = std::unique_ptr<Effect>;

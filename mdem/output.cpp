@@ -7,22 +7,30 @@
 
 namespace mesochain::mdem {
 
-EnergyCsvWriter::EnergyCsvWriter(const std::string& path, std::vector<int> probes)
-    : out_(path), probes_(std::move(probes)) {
+std::vector<std::string> energyColumns(const EnergyLedger& layout) {
+  std::vector<std::string> c;
+  for (const LedgerEntry& e : layout.entries())
+    if (e.kind != EnergyKind::Dissipated) c.push_back(e.name);
+  c.push_back("");
+  for (const LedgerEntry& e : layout.entries())
+    if (e.kind == EnergyKind::Dissipated) c.push_back(e.name);
+  return c;
+}
+
+EnergyCsvWriter::EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes)
+    : out_(path), columns_(energyColumns(layout)), probes_(std::move(probes)) {
   if (!out_) throw InputError(path, "", "a file that cannot be written", "a writable path");
-  out_ << "step,time_ns,kinetic_translational_zJ,kinetic_rotational_zJ,stretching_zJ,"
-          "shearing_zJ,twisting_zJ,bending_zJ,load_potential_zJ,vdw_zJ,total_zJ,contact_dissipated_zJ";
+  out_ << "step,time_ns";
+  for (const std::string& c : columns_) out_ << "," << (c.empty() ? "total" : c) << "_zJ";
   for (int p : probes_)
     for (const char* c : {"ux_nm", "uy_nm", "uz_nm", "rx_rad", "ry_rad", "rz_rad"})
       out_ << ",p" << p << "_" << c;
   out_ << "\n";
 }
 
-void EnergyCsvWriter::write(long step, double time, const Energies& e, const Bodies& b) {
-  out_ << fmt::format("{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}",
-                      step, time, e.kineticTranslational, e.kineticRotational, e.bonds.stretching,
-                      e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.loadPotential, e.vdw,
-                      e.total(), e.contactDissipated);
+void EnergyCsvWriter::write(long step, double time, const EnergyLedger& e, const Bodies& b) {
+  out_ << fmt::format("{},{:.10g}", step, time);
+  for (const std::string& c : columns_) out_ << fmt::format(",{:.12g}", c.empty() ? e.total() : e[c]);
   for (int p : probes_) {
     const Vec3 u = b.position[p] - b.initialPosition[p];
     const Vec3& r = b.accumulatedRotation[p];

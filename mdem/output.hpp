@@ -11,20 +11,27 @@
 
 namespace mesochain::mdem {
 
-// Columns: step, time_ns, kinetic_translational_zJ, kinetic_rotational_zJ, stretching_zJ,
-// shearing_zJ, twisting_zJ, bending_zJ, load_potential_zJ, vdw_zJ, total_zJ,
-// contact_dissipated_zJ (work of the dashpots so far, not in the total), then for each probe
+// Columns: step, time_ns, then the ledger's kinetic and potential entries in its order as
+// NAME_zJ (kinetic_translational, kinetic_rotational, then each effect's: stretching, shearing,
+// twisting, bending for bonds; vdw; load_potential), total_zJ, then the dissipated entries
+// (contact_dissipated_zJ: work of the dashpots so far, not in the total), then for each probe
 // element p: p<i>_ux_nm, _uy_nm, _uz_nm (displacement), p<i>_rx_rad, _ry_rad, _rz_rad
-// (accumulated rotation, integral of omega dt).
+// (accumulated rotation, integral of omega dt). Only the effects a scene builds have columns.
 class EnergyCsvWriter {
  public:
-  EnergyCsvWriter(const std::string& path, std::vector<int> probes);
-  void write(long step, double time, const Energies& e, const Bodies& b);
+  // `layout`: a ledger of the run (its names and kinds fix the columns).
+  EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes);
+  void write(long step, double time, const EnergyLedger& e, const Bodies& b);
 
  private:
   std::ofstream out_;
+  std::vector<std::string> columns_;  // ledger entries in column order ("" = the total)
   std::vector<int> probes_;
 };
+
+// The ledger's entries in CSV column order: kinetic and potential entries, "" for the total,
+// then the dissipated entries.
+std::vector<std::string> energyColumns(const EnergyLedger& layout);
 
 // Extended XYZ (one frame appended per call), readable by OVITO and ASE:
 //   Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:velo:R:3

@@ -29,7 +29,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   };
 
   std::unique_ptr<EnergyCsvWriter> csv;
-  if (!o.energiesCsv.empty()) csv = std::make_unique<EnergyCsvWriter>(prepare(o.energiesCsv), o.probes);
+  if (!o.energiesCsv.empty()) csv = std::make_unique<EnergyCsvWriter>(prepare(o.energiesCsv), sim.energies(), o.probes);
   std::ofstream xyz;
   if (!o.xyz.empty()) {
     xyz.open(prepare(o.xyz));
@@ -59,7 +59,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   RunSummary r;
   r.timeStep = sim.timeStep();
   r.criticalTimeStep = sim.stability().criticalTimeStep;
-  r.dissipatedTracked = sim.effect("contact_damping") != nullptr;
+  for (const LedgerEntry& e : sim.energies().entries()) r.dissipatedTracked = r.dissipatedTracked || e.kind == EnergyKind::Dissipated;
   record(true);
   const long every = std::max(1L, scene.run.steps / 200);
   const bool frames = xyz.is_open() || !vtkPrefix.empty();
@@ -78,8 +78,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     const bool last = k == scene.run.steps;
     if (scene.run.stopKineticEnergy > 0.0 && k >= scene.run.minimumSteps &&
         k % scene.run.checkEvery == 0) {
-      const Energies e = sim.energies();
-      if (e.kineticTranslational + e.kineticRotational < scene.run.stopKineticEnergy) {
+      if (sim.energies().kinetic() < scene.run.stopKineticEnergy) {
         r.stoppedByCriterion = true;
         record(true);
         break;

@@ -12,7 +12,7 @@ struct RunSummary {
   long steps = 0;
   double time = 0.0;             // ns
   bool stoppedByCriterion = false;
-  Energies finalEnergies;
+  EnergyLedger finalEnergies;
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
   bool dissipatedTracked = false;  // the scene has contact dashpots

@@ -7,62 +7,28 @@
 #include <omp.h>
 
 #include "common/errors.hpp"
-#include "mdem/contacts/contact_effects.hpp"
-#include "mdem/damping.hpp"
+#include "mdem/effect_registry.hpp"
 #include "mdem/integrator.hpp"
-#include "mdem/stepper.hpp"
 
 namespace mesochain::mdem {
 
 namespace {
-bool named(const std::vector<std::string>& list, const char* name) {
-  return std::find(list.begin(), list.end(), name) != list.end();
+std::vector<Effect*> pointers(const std::vector<EffectPtr>& effects) {
+  std::vector<Effect*> p;
+  for (const EffectPtr& e : effects) p.push_back(e.get());
+  return p;
 }
 }  // namespace
 
 Simulation::Simulation(const Scene& scene)
     : state_{scene.bodies, 0.0},
       kinematics_(scene.boundary, scene.bodies.size()),
+      effects_(buildEffects(scene)),
+      sequence_(pointers(effects_)),
       h_(scene.run.timeStep) {
-  for (const std::string& e : scene.effects)
-    if (e != "bonds" && e != "local_damping" && e != "viscous_damping" && e != "vdw_contact" &&
-        e != "contact_damping")
-      throw InputError(scene.source, "key effects", "\"" + e + "\"",
-                       "one of \"bonds\", \"vdw_contact\", \"contact_damping\", "
-                       "\"local_damping\", \"viscous_damping\"");
-  // Fixed build order: conservative effects, loads, then dissipation.
-  if (named(scene.effects, "bonds")) {
-    auto b = std::make_unique<BondEffect>(scene.bonds, scene.bodies.size());
-    bondEffect_ = b.get();
-    effects_.push_back(std::move(b));
-  }
-  ContactEffects contacts = makeContactEffects(scene);  // only those named
-  const std::vector<ContactStabilityTerms> contactTerms = contactStabilityTerms(scene, contacts);
-  if (contacts.vdw) effects_.push_back(std::move(contacts.vdw));
-  if (!scene.boundary.loads.empty())
-    effects_.push_back(std::make_unique<LoadEffect>(scene.boundary.loads, scene.bodies));
-  if (contacts.damping) effects_.push_back(std::move(contacts.damping));
-  if (named(scene.effects, "local_damping"))
-    effects_.push_back(std::make_unique<LocalDamping>(scene.localDampingAlpha));
-  if (named(scene.effects, "viscous_damping"))
-    effects_.push_back(std::make_unique<ViscousDamping>(scene.viscousRate));
-
-  for (auto& e : effects_) {
-    if (auto* b = dynamic_cast<BondEffect*>(e.get())) {
-      core_.bonds = b;
-    } else if (auto* l = dynamic_cast<LoadEffect*>(e.get())) {
-      core_.loads = l;
-    } else if (auto* d = dynamic_cast<LocalDamping*>(e.get())) {
-      core_.localDamping = d;
-    } else if (auto* v = dynamic_cast<ViscousDamping*>(e.get())) {
-      core_.viscousDamping = v;
-    } else {
-      others_.push_back(e.get());
-    }
-  }
-
-  limit_ = criticalTimeStep(state_.bodies, bondEffect_ ? bondEffect_->bonds() : std::vector<Bond>{},
-                            kinematics_, contactTerms);
+  std::vector<ContactStabilityTerms> contactTerms(scene.elementTypes.size());
+  for (const EffectPtr& e : effects_) e->addStabilityTerms(contactTerms);
+  limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, contactTerms);
   if (scene.run.timeStepFraction > 0.0) {
     if (scene.run.timeStepFraction > 1.0)
       throw InputError(scene.source, "key run.time_step_fraction",
@@ -84,45 +50,24 @@ Simulation::Simulation(const Scene& scene)
                                  limit_.dampingRate, limit_.rotational ? "rotation" : "translation",
                                  limit_.element));
   kinematics_.apply(state_.bodies, 0.0);
-  computeForces(true);
+  evaluateForces(state_, sequence_, kinematics_, true, true);
 }
 
-void Simulation::computeForces(bool withDamping) {
-  Bodies& s = state_.bodies;
-  std::fill(s.force.begin(), s.force.end(), Vec3::Zero());
-  std::fill(s.torque.begin(), s.torque.end(), Vec3::Zero());
-  for (auto& e : effects_) {
-    if (!withDamping && (e->name() == "local_damping" || e->name() == "viscous_damping")) continue;
-    e->addForces(state_);
-  }
-  kinematics_.clearConstrainedForces(s);
-}
+void Simulation::refreshForces() { evaluateForces(state_, sequence_, kinematics_, true, true); }
 
 void Simulation::run(long steps) {
   if (steps <= 0) return;
-  if (others_.empty()) {
-    const int threads = omp_get_max_threads();
-    if (partition_.threads != threads)
-      partition_ = partitionByBonds(state_.bodies.size(), bonds(), threads);
-    advanceFused(state_, core_, kinematics_, h_, steps, &partition_);
-  } else {
-    Bodies& s = state_.bodies;
-    for (long k = 0; k < steps; ++k) {
-      firstHalf(state_, kinematics_, h_);
-      std::fill(s.force.begin(), s.force.end(), Vec3::Zero());
-      std::fill(s.torque.begin(), s.torque.end(), Vec3::Zero());
-      for (Effect* e : others_) e->addForces(state_);
-      secondHalf(state_, core_, kinematics_, h_);
-    }
-  }
+  const int threads = omp_get_max_threads();
+  if (partition_.threads != threads) partition_ = partitionElements(state_.bodies.size(), bonds(), sequence_, threads);
+  advance(state_, sequence_, kinematics_, h_, steps, &partition_);
   steps_ += steps;
 }
 
-Energies Simulation::energies() const {
-  Energies e;
-  e.kineticTranslational = kineticTranslational(state_.bodies);
-  e.kineticRotational = kineticRotational(state_.bodies);
-  for (const auto& f : effects_) e += f->energy(state_);
+EnergyLedger Simulation::energies() const {
+  EnergyLedger e;
+  e.add("kinetic_translational", EnergyKind::Kinetic, kineticTranslational(state_.bodies));
+  e.add("kinetic_rotational", EnergyKind::Kinetic, kineticRotational(state_.bodies));
+  for (const auto& f : effects_) f->reportEnergy(state_, e);
   return e;
 }
 
@@ -140,21 +85,26 @@ Effect* Simulation::effect(const std::string& name) const {
 
 const std::vector<Bond>& Simulation::bonds() const {
   static const std::vector<Bond> kNone;
-  return bondEffect_ ? bondEffect_->bonds() : kNone;
+  for (const auto& e : effects_)
+    if (const std::vector<Bond>* b = e->bondList()) return *b;
+  return kNone;
+}
+
+const ContactNeighbourhood* Simulation::contactNeighbourhood() const {
+  for (const auto& e : effects_)
+    if (const ContactNeighbourhood* n = e->contactNeighbourhood()) return n;
+  return nullptr;
 }
 
 std::vector<Vec3> Simulation::unconstrainedForces() const {
   State copy = state_;
-  std::fill(copy.bodies.force.begin(), copy.bodies.force.end(), Vec3::Zero());
-  std::fill(copy.bodies.torque.begin(), copy.bodies.torque.end(), Vec3::Zero());
-  for (const auto& e : effects_)
-    if (e->name() != "local_damping" && e->name() != "viscous_damping") e->addForces(copy);
+  evaluateForces(copy, sequence_, kinematics_, false, false);
   return copy.bodies.force;
 }
 
 std::pair<double, double> Simulation::residual() {
   const std::vector<Vec3> force = state_.bodies.force, torque = state_.bodies.torque;
-  computeForces(false);
+  evaluateForces(state_, sequence_, kinematics_, false, true);
   double f = 0.0, m = 0.0;
   for (int i = 0; i < state_.bodies.size(); ++i) {
     f = std::max(f, state_.bodies.force[i].norm());

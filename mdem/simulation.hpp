@@ -1,17 +1,11 @@
 #pragma once
-// Orchestration: builds the list of effects named by the scene, checks the time step against
-// the critical one, and advances the state. One step (velocity Verlet + DLM rotation,
-// integrator.hpp):
-//   kick(h/2); constraints(t + h/2); drift(h); t += h; forces; kick(h/2); constraints(t).
-// Forces: every effect in order bonds -> vdw_contact -> loads -> contact_damping ->
-// local_damping -> viscous_damping (the damping effects act on the accumulated force), then
-// constrained components are cleared. When the scene has only bonds, loads and damping, run(n)
-// advances n steps in one OpenMP parallel region (stepper.hpp); other effects (contacts) add
-// their forces between the two halves of each step.
+// Orchestration: builds the effects the scene wants (effect_registry.hpp), checks the time step
+// against the critical one, and advances the state on the stepper (stepper.hpp describes the
+// scheme). The simulation knows no effect by name: energies come from the ledger the effects
+// report into, capabilities (the bonds, the contact neighbourhood) through Effect's queries.
 #include <string>
 #include <vector>
 
-#include "mdem/bond_effect.hpp"
 #include "mdem/effect.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/stability.hpp"
@@ -22,14 +16,15 @@ namespace mesochain::mdem {
 class Simulation {
  public:
   // Throws InputError (naming scene.source and key run.time_step_ns) when the time step is not
-  // positive or exceeds the critical time step.
+  // positive or exceeds the critical time step, and for effects that are not registered.
   explicit Simulation(const Scene& scene);
 
   void step() { run(1); }
   void run(long steps);
 
-  // Kinetic energies plus the energies of every effect.
-  Energies energies() const;
+  // Kinetic energies ("kinetic_translational", "kinetic_rotational") and the entries of every
+  // effect, in effect order.
+  EnergyLedger energies() const;
   const State& state() const { return state_; }
   State& state() { return state_; }
   const Bodies& bodies() const { return state_.bodies; }
@@ -38,31 +33,36 @@ class Simulation {
   long stepCount() const { return steps_; }
   const StabilityLimit& stability() const { return limit_; }
   std::vector<std::string> effectNames() const;
-  // The built effect of that name, or nullptr (e.g. dynamic_cast to VdwContactEffect).
+  // The built effect of that name, or nullptr.
   Effect* effect(const std::string& name) const;
-  // The bonds with their tracked state (empty when "bonds" is not an effect).
+  const std::vector<EffectPtr>& effects() const { return effects_; }
+  // The bonds with their tracked state (empty without an effect that has bonds).
   const std::vector<Bond>& bonds() const;
-  const BondEffect* bondEffect() const { return bondEffect_; }
+  // The contact neighbourhood of the contact effects (null without contacts).
+  const ContactNeighbourhood* contactNeighbourhood() const;
 
   // Largest unbalanced force (pN) and moment (pN nm) on the unconstrained DOFs, without the
-  // damping effects: the residual of a static solution.
+  // numerical damping: the residual of a static solution.
   std::pair<double, double> residual();
 
-  // Forces of every effect but local / viscous damping on the current state, constrained
+  // Forces of every physical effect (no numerical damping) on the current state, constrained
   // components included (the reactions of grips and supports follow from them); the state is
   // left as it was.
   std::vector<Vec3> unconstrainedForces() const;
 
- private:
-  void computeForces(bool withDamping);
+  // Restart (checkpoint.hpp): the step count and every effect's evolving state.
+  void setStepCount(long steps) { steps_ = steps; }
+  // Recomputes the forces of the current state (after the state was replaced, e.g. by a
+  // checkpoint), without touching the effects' evolving state beyond what a force evaluation
+  // does.
+  void refreshForces();
 
+ private:
   State state_;
   KinematicMap kinematics_;
   std::vector<EffectPtr> effects_;
-  BondEffect* bondEffect_ = nullptr;
-  CoreEffects core_;             // the effects the fused step runs itself
-  std::vector<Effect*> others_;  // effects that add their forces on their own
-  ThreadPartition partition_;    // for the current number of OpenMP threads
+  EffectSequence sequence_;
+  ThreadPartition partition_;  // for the current number of OpenMP threads
   StabilityLimit limit_;
   double h_ = 0.0;
   long steps_ = 0;

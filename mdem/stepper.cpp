@@ -13,20 +13,10 @@ namespace {
 
 // Elements below this count run on one thread (the parallel region costs more than it saves).
 constexpr int kParallelThreshold = 512;
-
-// Total force and torque on element i at time t: `force` / `torque` enter with the
-// contributions of other effects; bonds, loads and damping are added in the effects' order,
-// constrained components cleared, and the result stored for the kick.
-inline void finishForces(Bodies& s, int i, double t, const CoreEffects& core,
-                         const KinematicMap& km, Vec3 force, Vec3 torque) {
-  if (core.bonds) core.bonds->gather(i, force, torque);
-  if (core.loads) core.loads->addToElement(s, i, t, force, torque);
-  if (core.localDamping) core.localDamping->dampElement(s, i, force, torque);
-  if (core.viscousDamping) core.viscousDamping->dampElement(s, i, force, torque);
-  km.clearElement(i, force, torque);
-  s.force[i] = force;
-  s.torque[i] = torque;
-}
+// Elements per gather block (the block's forces stay in cache between the effects' gathers).
+constexpr int kBlock = 64;
+// Items per chunk of the item phase.
+constexpr int kItemChunk = 256;
 
 // Kick h/2, constraints at t + h/2, drift h (t: the time before the step).
 inline void openStep(Bodies& s, int i, double t, const KinematicMap& km, double h) {
@@ -41,11 +31,37 @@ inline void closeStep(Bodies& s, int i, double t, const KinematicMap& km, double
   km.applyElement(s, i, t);
 }
 
+// Forces of elements [lo, hi) at time t: every effect's gather in order, constrained components
+// cleared. Then close the step and, unless it is the last, open the next one.
+inline void finishBlock(State& state, const EffectSequence& fx, const KinematicMap& km, int lo, int hi,
+                        double t, double h, bool last) {
+  Bodies& s = state.bodies;
+  Vec3* force = s.force.data();
+  Vec3* torque = s.torque.data();
+  for (int i = lo; i < hi; ++i) force[i] = Vec3::Zero(), torque[i] = Vec3::Zero();
+  for (const Effect* e : fx.all) e->gather(state, t, lo, hi, force, torque);
+  for (int i = lo; i < hi; ++i) {
+    km.clearElement(i, force[i], torque[i]);
+    closeStep(s, i, t, km, h);
+    if (!last) openStep(s, i, t, km, h);
+  }
+}
+
 }  // namespace
 
-ThreadPartition partitionByBonds(int n, const std::vector<Bond>& bonds, int threads) {
+EffectSequence::EffectSequence(const std::vector<Effect*>& effects) : all(effects) {
+  for (Effect* e : all) {
+    if (e->itemCount() > 0 || e->hasPrepare()) withItems.push_back(e);
+    if (e->hasPrepare()) withPrepare.push_back(e);
+    if (e->hasFinish()) withFinish.push_back(e);
+    couplesFilaments = couplesFilaments || e->couplesFilaments();
+  }
+}
+
+ThreadPartition partitionElements(int n, const std::vector<Bond>& bonds, const EffectSequence& fx, int threads) {
   ThreadPartition p;
   p.threads = std::max(1, threads);
+  if (fx.couplesFilaments || !fx.withPrepare.empty() || !fx.withFinish.empty()) return p;
   // reach[c]: the largest element index bonded to an element below c; cut c is valid when
   // reach[c] < c (nothing below c is bonded to c or above).
   std::vector<int> reach(n + 1, -1);
@@ -56,7 +72,6 @@ ThreadPartition partitionByBonds(int n, const std::vector<Bond>& bonds, int thre
   for (int c = 1; c <= n; ++c) reach[c] = std::max(reach[c], reach[c - 1]);
   p.elementStart.assign(p.threads + 1, n);
   p.elementStart[0] = 0;
-  p.independent = true;
   const double share = static_cast<double>(n) / p.threads;
   for (int t = 1; t < p.threads; ++t) {
     const int even = static_cast<int>(t * share);
@@ -65,30 +80,35 @@ ThreadPartition partitionByBonds(int n, const std::vector<Bond>& bonds, int thre
       if (even - d > p.elementStart[t - 1] && reach[even - d] < even - d) best = even - d;
       else if (even + d < n && reach[even + d] < even + d) best = even + d;
     }
-    if (best < 0) {
-      p.independent = false;
-      return p;
-    }
+    if (best < 0) return p;
     p.elementStart[t] = best;
   }
   std::vector<int> owner(n);
   for (int t = 0; t < p.threads; ++t)
     for (int i = p.elementStart[t]; i < p.elementStart[t + 1]; ++i) owner[i] = t;
-  p.bondStart.assign(p.threads + 1, 0);
-  for (const Bond& b : bonds) ++p.bondStart[owner[b.a] + 1];
-  for (int t = 0; t < p.threads; ++t) p.bondStart[t + 1] += p.bondStart[t];
-  p.bondOrder.resize(bonds.size());
-  std::vector<int> fill(p.bondStart.begin(), p.bondStart.end() - 1);
-  for (int k = 0; k < static_cast<int>(bonds.size()); ++k) p.bondOrder[fill[owner[bonds[k].a]]++] = k;
+  for (const Effect* e : fx.withItems) {
+    const int items = e->itemCount();
+    std::vector<int> start(p.threads + 1, 0), order(items);
+    for (int k = 0; k < items; ++k) {
+      const int el = e->itemElement(k);
+      if (el < 0 || el >= n) return p;  // an item without an element: no independent parts
+      ++start[owner[el] + 1];
+    }
+    for (int t = 0; t < p.threads; ++t) start[t + 1] += start[t];
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int k = 0; k < items; ++k) order[fill[owner[e->itemElement(k)]]++] = k;
+    p.itemStart.push_back(std::move(start));
+    p.itemOrder.push_back(std::move(order));
+  }
+  p.independent = true;
   return p;
 }
 
-void advanceFused(State& state, const CoreEffects& core, const KinematicMap& km, double h,
-                  long steps, const ThreadPartition* partition) {
+void advance(State& state, const EffectSequence& fx, const KinematicMap& km, double h, long steps,
+             const ThreadPartition* partition) {
   if (steps <= 0) return;
   Bodies& s = state.bodies;
   const int n = s.size();
-  const int nb = core.bonds ? core.bonds->size() : 0;
   const double t0 = state.time;
   if (partition && partition->independent && partition->threads > 1 && n > kParallelThreshold) {
     const ThreadPartition& p = *partition;
@@ -97,24 +117,24 @@ void advanceFused(State& state, const CoreEffects& core, const KinematicMap& km,
       // Whole parts per thread (a smaller team than planned takes several parts each).
       for (int part = omp_get_thread_num(); part < p.threads; part += omp_get_num_threads()) {
         const int lo = p.elementStart[part], hi = p.elementStart[part + 1];
-        const int blo = p.bondStart[part], bhi = p.bondStart[part + 1];
         double t = t0;
         for (int i = lo; i < hi; ++i) openStep(s, i, t, km, h);
         for (long k = 0; k < steps; ++k) {
           t += h;
-          for (int e = blo; e < bhi; ++e) core.bonds->computeBond(s, p.bondOrder[e]);
-          const bool last = k + 1 == steps;
-          for (int i = lo; i < hi; ++i) {
-            finishForces(s, i, t, core, km, Vec3::Zero(), Vec3::Zero());
-            closeStep(s, i, t, km, h);
-            if (!last) openStep(s, i, t, km, h);
+          for (std::size_t e = 0; e < fx.withItems.size(); ++e) {
+            const std::vector<int>& start = p.itemStart[e];
+            fx.withItems[e]->computeItemList(state, t, p.itemOrder[e].data() + start[part],
+                                             start[part + 1] - start[part]);
           }
+          const bool last = k + 1 == steps;
+          for (int b = lo; b < hi; b += kBlock) finishBlock(state, fx, km, b, std::min(hi, b + kBlock), t, h, last);
         }
       }
     }
     for (long k = 0; k < steps; ++k) state.time += h;
     return;
   }
+  const int blocks = (n + kBlock - 1) / kBlock;
 #pragma omp parallel if (n > kParallelThreshold)
   {
     double t = t0;  // every thread follows the same time sequence
@@ -122,48 +142,42 @@ void advanceFused(State& state, const CoreEffects& core, const KinematicMap& km,
     for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
     for (long k = 0; k < steps; ++k) {
       t += h;
-      if (nb > 0) {
-#pragma omp for schedule(static)
-        for (int b = 0; b < nb; ++b) core.bonds->computeBond(s, b);
+      if (!fx.withPrepare.empty()) {
+#pragma omp single
+        for (Effect* e : fx.withPrepare) e->prepare(state, t);
       }
+      for (Effect* e : fx.withItems) {
+        const int items = e->itemCount();
+        const int chunks = (items + kItemChunk - 1) / kItemChunk;
+#pragma omp for schedule(static) nowait
+        for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
+      }
+#pragma omp barrier
       const bool last = k + 1 == steps;
 #pragma omp for schedule(static)
-      for (int i = 0; i < n; ++i) {
-        finishForces(s, i, t, core, km, Vec3::Zero(), Vec3::Zero());
-        closeStep(s, i, t, km, h);
-        if (!last) openStep(s, i, t, km, h);
+      for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
+      if (!fx.withFinish.empty()) {
+#pragma omp single
+        for (Effect* e : fx.withFinish) e->finish(state, t);
       }
     }
   }
   for (long k = 0; k < steps; ++k) state.time += h;
 }
 
-void firstHalf(State& state, const KinematicMap& km, double h) {
+void evaluateForces(State& state, const EffectSequence& fx, const KinematicMap& km, bool includeNumericalDamping,
+                    bool clearConstrained) {
   Bodies& s = state.bodies;
-  const int n = s.size();
-  const double t = state.time;
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
-  state.time += h;
-}
-
-void secondHalf(State& state, const CoreEffects& core, const KinematicMap& km, double h) {
-  Bodies& s = state.bodies;
-  const int n = s.size();
-  const int nb = core.bonds ? core.bonds->size() : 0;
-  const double t = state.time;
-#pragma omp parallel if (n > kParallelThreshold)
-  {
-    if (nb > 0) {
-#pragma omp for schedule(static)
-      for (int b = 0; b < nb; ++b) core.bonds->computeBond(s, b);
-    }
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      finishForces(s, i, t, core, km, s.force[i], s.torque[i]);
-      closeStep(s, i, t, km, h);
-    }
+  std::fill(s.force.begin(), s.force.end(), Vec3::Zero());
+  std::fill(s.torque.begin(), s.torque.end(), Vec3::Zero());
+  for (Effect* e : fx.all) {
+    if (!includeNumericalDamping && e->role() == EffectRole::NumericalDamping) continue;
+    if (e->hasPrepare()) e->prepare(state, state.time);
+    e->computeItems(state, state.time, 0, e->itemCount());
+    e->gather(state, state.time, 0, s.size(), s.force.data(), s.torque.data());
+    if (e->hasFinish()) e->finish(state, state.time);
   }
+  if (clearConstrained) km.clearConstrainedForces(s);
 }
 
 }  // namespace mesochain::mdem

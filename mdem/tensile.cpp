@@ -13,6 +13,7 @@
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/integrator.hpp"
+#include "mdem/output.hpp"
 
 namespace mesochain::mdem {
 
@@ -80,9 +81,7 @@ TensileRecorder::TensileRecorder(const Scene& scene, const std::string& csvPath)
   if (csvPath.empty()) return;
   csv_.open(csvPath);
   if (!csv_) throw InputError(csvPath, "", "a file that cannot be written", "a writable path (tensile.csv)");
-  csv_ << "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ,stretching_zJ,shearing_zJ,"
-          "twisting_zJ,bending_zJ,vdw_zJ,kinetic_translational_zJ,kinetic_rotational_zJ,total_zJ,"
-          "contact_dissipated_zJ,contact_pairs,aligned_pairs\n";
+  // The header follows at the first sample, when the ledger's entries are known.
 }
 
 const TensileSample& TensileRecorder::record(const Simulation& sim) {
@@ -110,17 +109,22 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
   s.energies = sim.energies();
   if (!samples_.empty()) s.gripWork = samples_.back().gripWork + 0.5 * (lastPower_ + power) * (s.time - samples_.back().time);
   lastPower_ = power;
-  if (const auto* v = dynamic_cast<const VdwContactEffect*>(sim.effect("vdw_contact"))) {
-    const ContactCount c = countContacts(v->neighbourhood(), b, t.contactGap, t.alignedAngle);
+  if (const ContactNeighbourhood* nb = sim.contactNeighbourhood()) {
+    const ContactCount c = countContacts(*nb, b, t.contactGap, t.alignedAngle);
     s.contacts = c.inContact, s.aligned = c.aligned;
   }
   samples_.push_back(s);
   if (csv_.is_open()) {
-    const Energies& e = s.energies;
-    csv_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{}\n",
-                        s.time, s.strain, s.stress, s.forceLeft, s.forceRight, s.gripWork, e.bonds.stretching,
-                        e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.vdw, e.kineticTranslational,
-                        e.kineticRotational, e.total(), e.contactDissipated, s.contacts, s.aligned);
+    if (columns_.empty()) {
+      columns_ = energyColumns(s.energies);
+      csv_ << "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ";
+      for (const std::string& c : columns_) csv_ << "," << (c.empty() ? "total" : c) << "_zJ";
+      csv_ << ",contact_pairs,aligned_pairs\n";
+    }
+    csv_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", s.time, s.strain, s.stress, s.forceLeft,
+                        s.forceRight, s.gripWork);
+    for (const std::string& c : columns_) csv_ << fmt::format(",{:.10g}", c.empty() ? s.energies.total() : s.energies[c]);
+    csv_ << fmt::format(",{},{}\n", s.contacts, s.aligned);
     csv_.flush();
   }
   return samples_.back();
@@ -128,17 +132,25 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
 
 void TensileRecorder::writePlot(const std::string& path) const {
   std::vector<double> strain, stress, contacts, aligned;
-  std::vector<std::vector<double>> energy(8);
-  const char* names[8] = {"stretching", "shearing", "twisting", "bending", "van der Waals", "kinetic", "grip work", "total - initial"};
+  // Each stored (potential) energy, the kinetic energy, the grip work and total - initial.
+  std::vector<std::string> names;
+  if (!samples_.empty())
+    for (const LedgerEntry& e : samples_.front().energies.entries())
+      if (e.kind == EnergyKind::Potential) names.push_back(e.name);
+  const std::size_t stored = names.size();
+  names.insert(names.end(), {"kinetic", "grip work", "total - initial"});
+  std::vector<std::vector<double>> energy(names.size());
   for (const TensileSample& s : samples_) {
     strain.push_back(s.strain), stress.push_back(s.stress);
     contacts.push_back(s.contacts), aligned.push_back(s.aligned);
-    const Energies& e = s.energies;
-    const double v[8] = {e.bonds.stretching, e.bonds.shearing, e.bonds.twisting, e.bonds.bending, e.vdw,
-                         e.kineticTranslational + e.kineticRotational, s.gripWork,
-                         e.total() - samples_.front().energies.total()};
-    for (int k = 0; k < 8; ++k) energy[k].push_back(v[k]);
+    const EnergyLedger& e = s.energies;
+    for (std::size_t k = 0; k < stored; ++k) energy[k].push_back(e[names[k]]);
+    energy[stored].push_back(e.kinetic());
+    energy[stored + 1].push_back(s.gripWork);
+    energy[stored + 2].push_back(e.total() - samples_.front().energies.total());
   }
+  for (std::string& n : names)
+    if (n == "vdw") n = "van der Waals";
   const int width = 900, height = 420;
   plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts against strain");
   fs.x.label = fe.x.label = fc.x.label = "strain";
@@ -146,10 +158,10 @@ void TensileRecorder::writePlot(const std::string& path) const {
   fe.y.label = "energy (zJ)";
   fc.y.label = "pairs";
   fs.add(fmt::format("stress (A = {:.4g} nm^2)", area_), strain, stress);
-  for (int k = 0; k < 8; ++k) {
+  for (std::size_t k = 0; k < names.size(); ++k) {
     plot::SeriesStyle style;
-    style.color = plot::paletteColor(k);
-    style.dashed = k >= 6;
+    style.color = plot::paletteColor(static_cast<int>(k));
+    style.dashed = k > stored;
     fe.add(names[k], strain, energy[k], style);
   }
   fc.add("in contact", strain, contacts);

@@ -14,7 +14,7 @@
 //           exerts on a grip's elements (unconstrained, without numerical damping), A the
 //           cross-section: cross_section_nm2, or the [network] film's width normal to the axis
 //           times (film thickness + 2 R_max), the outer extent of the tubes' walls;
-//   energies by kind (stretching, shearing, twisting, bending, van der Waals, kinetic), the
+//   the energies of the ledger (kinetic, each effect's; the total; the dissipated work), the
 //           work of the grips W = \int sum_i R_i v_i dt (R_i = m_i a(t) - F_i the reaction on
 //           grip element i; trapezoid rule between samples) and the work of the dashpots;
 //   contacts: pairs with a wall gap below contact_gap_nm, and those crossing below
@@ -39,7 +39,7 @@ struct TensileSample {
   double time = 0.0, strain = 0.0, stress = 0.0;  // ns, -, MPa
   double forceLeft = 0.0, forceRight = 0.0;       // pN, specimen on the grips (axial)
   double gripWork = 0.0;                          // zJ
-  Energies energies;
+  EnergyLedger energies;
   int contacts = 0, aligned = 0;
 };
 
@@ -57,6 +57,7 @@ class TensileRecorder {
   const Scene& scene_;
   double area_ = 0.0;
   std::ofstream csv_;
+  std::vector<std::string> columns_;  // energy columns (output.hpp, energyColumns), from the first sample
   std::vector<TensileSample> samples_;
   double lastPower_ = 0.0;
 };

@@ -5,27 +5,32 @@
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
+#include "mdem/output.hpp"
 
 namespace mesochain::mdem {
 
 namespace {
-constexpr const char* kEnergyNames[] = {"kinetic translational", "kinetic rotational", "stretching",
-                                        "shearing", "twisting", "bending", "load potential",
-                                        "van der Waals", "dissipated by dashpots", "total"};
-constexpr int kEnergyKinds = 10;
 constexpr const char* kProbeNames[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+// Legend name of a ledger entry ("" = the total).
+std::string legendName(const std::string& entry) {
+  if (entry.empty()) return "total";
+  if (entry == "vdw") return "van der Waals";
+  if (entry == "contact_dissipated") return "dissipated by dashpots";
+  std::string n = entry;
+  for (char& c : n)
+    if (c == '_') c = ' ';
+  return n;
+}
 }  // namespace
 
-void TimeSeriesPlot::record(double time, const Energies& e, const Bodies& b) {
+void TimeSeriesPlot::record(double time, const EnergyLedger& e, const Bodies& b) {
   if (energies_.empty()) {
-    energies_.resize(kEnergyKinds);
+    columns_ = energyColumns(e);
+    energies_.resize(columns_.size());
     probe_.resize(6 * probes_.size());
   }
   time_.push_back(time);
-  const double values[kEnergyKinds] = {e.kineticTranslational, e.kineticRotational, e.bonds.stretching,
-                                       e.bonds.shearing, e.bonds.twisting, e.bonds.bending,
-                                       e.loadPotential, e.vdw, e.contactDissipated, e.total()};
-  for (int k = 0; k < kEnergyKinds; ++k) energies_[k].push_back(values[k]);
+  for (std::size_t k = 0; k < columns_.size(); ++k) energies_[k].push_back(columns_[k].empty() ? e.total() : e[columns_[k]]);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const int i = probes_[p];
     const Vec3 u = b.position[i] - b.initialPosition[i];
@@ -43,17 +48,19 @@ void TimeSeriesPlot::write(const std::string& path) const {
   energies.x.label = "time (ns)";
   energies.y.label = "energy (zJ)";
   std::vector<std::string> zero;
-  for (int k = 0; k < kEnergyKinds && !energies_.empty(); ++k) {
+  bool afterTotal = false;
+  for (std::size_t k = 0; k < columns_.size(); ++k) {
+    afterTotal = afterTotal || columns_[k].empty();
     bool allZero = true;
     for (double v : energies_[k]) allZero = allZero && v == 0.0;
     if (allZero) {
-      zero.push_back(kEnergyNames[k]);
+      zero.push_back(legendName(columns_[k]));
       continue;
     }
     plot::SeriesStyle style;
-    style.color = plot::paletteColor(k);
-    style.dashed = k >= kEnergyKinds - 2;  // the dissipated work and the total
-    energies.add(kEnergyNames[k], time_, energies_[k], style);
+    style.color = plot::paletteColor(static_cast<int>(k));
+    style.dashed = afterTotal;  // the total and the dissipated work
+    energies.add(legendName(columns_[k]), time_, energies_[k], style);
   }
   energies.title = zero.empty() ? "Energies" : fmt::format("Energies (zero throughout: {})", fmt::join(zero, ", "));
   plot::Image image = energies.render(width, height, path);

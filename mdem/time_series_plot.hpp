@@ -1,7 +1,7 @@
 #pragma once
-// PNG plots of a run's time series ([output] plot_png): the energies (kinetic translational and
-// rotational, each bond energy kind, load potential, van der Waals, work dissipated by the contact
-// dashpots, total; zJ) and, when probes are given,
+// PNG plots of a run's time series ([output] plot_png): the energies (every ledger entry of the
+// run: kinetic, each effect's stored energies, work dissipated; the total; zJ) and, when probes
+// are given,
 // their displacements (nm) and accumulated rotations (rad), one panel each, against time (ns).
 #include <string>
 #include <vector>
@@ -15,7 +15,7 @@ class TimeSeriesPlot {
  public:
   explicit TimeSeriesPlot(std::vector<int> probes) : probes_(std::move(probes)) {}
 
-  void record(double time, const Energies& e, const Bodies& b);
+  void record(double time, const EnergyLedger& e, const Bodies& b);
   std::size_t samples() const { return time_.size(); }
 
   // Energy series that stay exactly zero are left out and named in the panel title; non-finite
@@ -25,7 +25,8 @@ class TimeSeriesPlot {
  private:
   std::vector<int> probes_;
   std::vector<double> time_;
-  std::vector<std::vector<double>> energies_;  // one vector per energy kind
+  std::vector<std::string> columns_;           // energyColumns() of the first sample
+  std::vector<std::vector<double>> energies_;  // one vector per column
   std::vector<std::vector<double>> probe_;     // per probe 6 vectors: ux uy uz rx ry rz
 };
 

@@ -7,9 +7,30 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/binary_io.hpp"
 #include "mdem/contacts/contact_file.hpp"
+#include "mdem/effect_registry.hpp"
 
 namespace mesochain::mdem {
+
+namespace {
+std::shared_ptr<ContactNeighbourhood> sharedNeighbourhood(EffectBuild& b, bool* owner);
+}  // namespace
+
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "vdw_contact", 200, "van der Waals contacts between tubes or bricks ([vdw_contact], docs/mdem-contacts.md)", true,
+    nullptr, [](EffectBuild& b) -> EffectPtr {
+      bool owner;
+      auto nb = sharedNeighbourhood(b, &owner);
+      return std::make_unique<VdwContactEffect>(b.scene, std::move(nb), owner);
+    }})
+MESOCHAIN_MDEM_EFFECT(EffectRegistration{
+    "contact_damping", 400, "dashpots in parallel with the contacts ([contact_damping])", true, nullptr,
+    [](EffectBuild& b) -> EffectPtr {
+      bool owner;
+      auto nb = sharedNeighbourhood(b, &owner);
+      return std::make_unique<ContactDampingEffect>(b.scene, std::move(nb), owner);
+    }})
 
 namespace {
 bool named(const Scene& s, const char* name) {
@@ -33,12 +54,12 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Gathers per-pair results into the element forces in a fixed order.
-void gather(const NeighbourList& list, const std::vector<ContactPairResult>& results, Bodies& s) {
+// Adds the per-pair results of elements [lo, hi) to their forces in a fixed order.
+void gatherPairs(const NeighbourList& list, const std::vector<ContactPairResult>& results, int lo, int hi,
+                 Vec3* force, Vec3* torque) {
   const std::vector<int>& start = list.incidentStart();
   const std::vector<int>& inc = list.incident();
-#pragma omp parallel for schedule(static) if (s.size() > 1024)
-  for (int i = 0; i < s.size(); ++i) {
+  for (int i = lo; i < hi; ++i) {
     Vec3 f = Vec3::Zero(), t = Vec3::Zero();
     for (int e = start[i]; e < start[i + 1]; ++e) {
       const ContactPairResult& r = results[inc[e] >> 1];
@@ -48,9 +69,23 @@ void gather(const NeighbourList& list, const std::vector<ContactPairResult>& res
         f += r.forceA, t += r.torqueA;
       }
     }
-    s.force[i] += f;
-    s.torque[i] += t;
+    force[i] += f;
+    torque[i] += t;
   }
+}
+
+// The neighbourhood the contact effects of one scene share, with the range of those named; the
+// first effect that asks for it owns it (saves it in checkpoints).
+std::shared_ptr<ContactNeighbourhood> sharedNeighbourhood(EffectBuild& b, bool* owner) {
+  *owner = false;
+  return b.shared<ContactNeighbourhood>("contact_neighbourhood", [&] {
+    *owner = true;
+    validateContactSpec(b.scene);
+    double range = 0.0;
+    if (b.named("vdw_contact")) range = std::max(range, VdwContactEffect::interactionRange(b.scene));
+    if (b.named("contact_damping")) range = std::max(range, ContactDampingEffect::interactionRange(b.scene));
+    return std::make_shared<ContactNeighbourhood>(b.scene, range);
+  });
 }
 }  // namespace
 
@@ -73,9 +108,9 @@ ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range)
   update(scene.bodies);
 }
 
-VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb)
-    : spec_(scene.contacts.vdw), rule_(gaussLegendre(scene.contacts.vdw.quadraturePoints)),
-      typeCount_(static_cast<int>(scene.elementTypes.size())), types_(typeCount_ * typeCount_), nb_(std::move(nb)) {
+VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb, bool owner)
+    : scene_(scene), spec_(scene.contacts.vdw), rule_(gaussLegendre(scene.contacts.vdw.quadraturePoints)),
+      typeCount_(static_cast<int>(scene.elementTypes.size())), types_(typeCount_ * typeCount_), nb_(std::move(nb)), ownsNeighbourhood_(owner) {
   std::vector<char> used(typeCount_, 0);
   for (int t : scene.bodies.type) used[t] = 1;
   bool bricks = false, tubes = false;
@@ -151,101 +186,123 @@ ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
   return r;
 }
 
-void VdwContactEffect::addForces(State& state) {
-  Bodies& s = state.bodies;
-  double t0 = now();
-  nb_->update(s);
-  double t1 = now();
-  nb_->seconds += t1 - t0;
-  const auto& pairs = nb_->list().pairs();
-  const int np = static_cast<int>(pairs.size());
-  results_.resize(np);
-#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
-  for (int p = 0; p < np; ++p) results_[p] = pair(s, pairs[p].first, pairs[p].second);
-  gather(nb_->list(), results_, s);
-  seconds += now() - t1;
+void VdwContactEffect::prepare(const State& state, double) {
+  const double t0 = now();
+  nb_->update(state.bodies);
+  nb_->seconds += now() - t0;
+  results_.resize(nb_->list().pairs().size());
 }
 
-Energies VdwContactEffect::energy(const State& state) const {
+void VdwContactEffect::computeItems(const State& state, double, int lo, int hi) {
+  const auto& pairs = nb_->list().pairs();
+  for (int p = lo; p < hi; ++p) results_[p] = pair(state.bodies, pairs[p].first, pairs[p].second);
+}
+
+void VdwContactEffect::gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const {
+  gatherPairs(nb_->list(), results_, lo, hi, force, torque);
+}
+
+void VdwContactEffect::reportEnergy(const State& state, EnergyLedger& ledger) const {
   const Bodies& s = state.bodies;
   const auto& pairs = nb_->list().pairs();
   const int np = static_cast<int>(pairs.size());
-  double e = 0.0;
-#pragma omp parallel for reduction(+ : e) schedule(dynamic, 256) if (np > 256)
-  for (int p = 0; p < np; ++p) e += pair(s, pairs[p].first, pairs[p].second).energy;
-  Energies out;
-  out.vdw = e;
-  return out;
+  std::vector<double> e(np);
+#pragma omp parallel for schedule(dynamic, 256) if (np > 256)
+  for (int p = 0; p < np; ++p) e[p] = pair(s, pairs[p].first, pairs[p].second).energy;
+  double sum = 0.0;  // in pair order: independent of the thread count
+  for (double x : e) sum += x;
+  ledger.add("vdw", EnergyKind::Potential, sum);
 }
 
-ContactDampingEffect::ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb)
-    : spec_(scene.contacts.damping), nb_(std::move(nb)) {}
+void VdwContactEffect::saveState(BinaryWriter& out) const {
+  if (ownsNeighbourhood_) nb_->saveList(out);
+}
+
+void VdwContactEffect::loadState(BinaryReader& in) {
+  if (ownsNeighbourhood_) nb_->loadList(in, scene_.bodies.size());
+  results_.resize(nb_->list().pairs().size());
+}
+
+ContactDampingEffect::ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb, bool owner)
+    : scene_(scene), spec_(scene.contacts.damping), nb_(std::move(nb)), ownsNeighbourhood_(owner) {}
 
 double ContactDampingEffect::interactionRange(const Scene& s) {
   return 2.0 * maxRadius(s) + s.contacts.damping.cutoffGap + 2.0 * maxHalfLength(s);
 }
 
-void ContactDampingEffect::addForces(State& state) {
-  Bodies& s = state.bodies;
-  double t0 = now();
-  nb_->update(s);
+void ContactDampingEffect::prepare(const State& state, double) {
+  const double t0 = now();
+  nb_->update(state.bodies);
   nb_->seconds += now() - t0;
+  results_.resize(nb_->list().pairs().size());
+  power_.resize(results_.size());
+}
+
+void ContactDampingEffect::computeItems(const State& state, double, int lo, int hi) {
+  const Bodies& s = state.bodies;
   const auto& pairs = nb_->list().pairs();
-  const int np = static_cast<int>(pairs.size());
-  results_.resize(np);
-  double power = 0.0;  // dissipated, >= 0
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : power) if (np > 256)
-  for (int p = 0; p < np; ++p) {
+  for (int p = lo; p < hi; ++p) {
     const int i = pairs[p].first, j = pairs[p].second;
     const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
     const Vec3 wi = s.angularVelocityWorld(i), wj = s.angularVelocityWorld(j);
     const ContactPairResult& r = results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]),
                                                                nb_->radius(s.type[j]), s.velocity[i], wi,
                                                                s.velocity[j], wj);
-    power -= r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj);
+    power_[p] = -(r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj));
   }
-  gather(nb_->list(), results_, s);
-  dissipated_ += power * (state.time - lastTime_);
-  lastTime_ = state.time;
 }
 
-Energies ContactDampingEffect::energy(const State&) const {
-  Energies e;
-  e.contactDissipated = dissipated_;
-  return e;
+void ContactDampingEffect::gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const {
+  gatherPairs(nb_->list(), results_, lo, hi, force, torque);
 }
 
-ContactEffects makeContactEffects(const Scene& scene) {
-  ContactEffects c;
-  const bool vdw = named(scene, "vdw_contact"), damping = named(scene, "contact_damping");
-  if (!vdw && !damping) return c;
-  validateContactSpec(scene);
-  double range = 0.0;
-  if (vdw) range = std::max(range, VdwContactEffect::interactionRange(scene));
-  if (damping) range = std::max(range, ContactDampingEffect::interactionRange(scene));
-  c.neighbourhood = std::make_shared<ContactNeighbourhood>(scene, range);
-  if (vdw) c.vdw = std::make_unique<VdwContactEffect>(scene, c.neighbourhood);
-  if (damping) c.damping = std::make_unique<ContactDampingEffect>(scene, c.neighbourhood);
-  return c;
+void ContactDampingEffect::finish(const State&, double time) {
+  double power = 0.0;  // dissipated, >= 0
+  for (double p : power_) power += p;
+  dissipated_ += power * (time - lastTime_);
+  lastTime_ = time;
 }
 
-std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, const ContactEffects& effects) {
-  const int nt = static_cast<int>(scene.elementTypes.size());
-  std::vector<ContactStabilityTerms> terms(nt);
-  if (!effects.vdw && !effects.damping) return terms;
-  std::vector<char> used(nt, 0);
+void ContactDampingEffect::reportEnergy(const State&, EnergyLedger& ledger) const {
+  ledger.add("contact_dissipated", EnergyKind::Dissipated, dissipated_);
+}
+
+void ContactDampingEffect::saveState(BinaryWriter& out) const {
+  out.write(dissipated_), out.write(lastTime_);
+  if (ownsNeighbourhood_) nb_->saveList(out);
+}
+
+void ContactDampingEffect::loadState(BinaryReader& in) {
+  dissipated_ = in.read<double>(), lastTime_ = in.read<double>();
+  if (ownsNeighbourhood_) nb_->loadList(in, scene_.bodies.size());
+  results_.resize(nb_->list().pairs().size());
+  power_.resize(results_.size());
+}
+
+namespace {
+// Types present in the scene.
+std::vector<char> usedTypes(const Scene& scene) {
+  std::vector<char> used(scene.elementTypes.size(), 0);
   for (int t : scene.bodies.type) used[t] = 1;
-  const double n = kContactCoordination, rMax = maxRadius(scene);
+  return used;
+}
+}  // namespace
+
+void VdwContactEffect::addStabilityTerms(std::vector<ContactStabilityTerms>& terms) const {
+  const Scene& scene = scene_;
+  const int nt = static_cast<int>(scene.elementTypes.size());
+  const std::vector<char> used = usedTypes(scene);
+  const double n = kContactCoordination;
   for (int a = 0; a < nt; ++a) {
     if (!used[a]) continue;
     const ElementType& ta = scene.elementTypes[a];
-    const double l = ta.length, r = effectiveRadius(ta);
+    const double l = ta.length;
     ContactStabilityTerms& c = terms[a];
-    if (effects.vdw && effects.vdw->faceModel()) {
+    if (faceModel()) {
       // Bricks: f''(D) at the minimum of the bilayer energy per area, over the face area A = w L;
       // tilting about the width / length axes: A L^2/12, A w^2/12; twisting about the normal
       // moves the edge ramps: |f_min| (perimeter) r^2 / delta with r the half diagonal.
-      const FaceContactModel& m = *effects.vdw->faceModel();
+      const FaceContactModel& m = *faceModel();
       double best = 0.0, dEq = 0.0, fMin = 0.0, df;
       for (double d = 0.5 * m.spec().layerSpacing; d < m.cutoffDistance(); d += 1e-3) {
         const double f = m.bilayerEnergy(d, &df);
@@ -256,34 +313,43 @@ std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, con
       m.bilayerEnergy(dEq + delta, &up), m.bilayerEnergy(dEq - delta, &down);
       best = (up - down) / (2.0 * delta);
       const double area = ta.width * ta.length, r2 = 0.25 * (ta.width * ta.width + l * l);
-      c.stiffness = 2.0 * n * best * area;
-      c.rotationalStiffness = Vec3(2.0 * n * std::abs(fMin) * 2.0 * (ta.width + l) * r2 / m.spec().edgeWidth,
-                                   2.0 * n * best * area * l * l / 12.0,
-                                   2.0 * n * best * area * ta.width * ta.width / 12.0);
-    } else if (effects.vdw) {
+      c.stiffness += 2.0 * n * best * area;
+      c.rotationalStiffness += Vec3(2.0 * n * std::abs(fMin) * 2.0 * (ta.width + l) * r2 / m.spec().edgeWidth,
+                                    2.0 * n * best * area * l * l / 12.0,
+                                    2.0 * n * best * area * ta.width * ta.width / 12.0);
+    } else {
       double curvature = 0.0;  // largest Phi'' at the minimum over the partner types
       for (int b = 0; b < nt; ++b) {
         if (!used[b]) continue;
-        const TubePairPotential& p = *effects.vdw->potential(a, b);
+        const TubePairPotential& p = *potential(a, b);
         const double d = p.equilibriumDistance(), delta = 1e-3;
         double up, down;
         p.phi(d + delta, &up), p.phi(d - delta, &down);
         curvature = std::max(curvature, (up - down) / (2.0 * delta));
       }
-      c.stiffness = 2.0 * n * curvature * l;
-      c.rotationalStiffness = Vec3(1.0, 1.0, 0.0) * (2.0 * n * curvature * l * l * l / 12.0);
-    }
-    if (effects.damping) {
-      const ContactDampingSpec& d = scene.contacts.damping;
-      const double lambda = l + r + rMax, rc = r + 0.5 * d.fullGap;
-      const double rn2 = 0.25 * l * l + rc * rc;
-      c.damping = 2.0 * n * d.translational * lambda;
-      const double normal = 2.0 * n * (d.translational * lambda * rn2 + d.rotational * lambda);
-      const double axial = 2.0 * n * (d.translational * lambda * rc * rc + d.rotational * lambda);
-      c.rotationalDamping = Vec3(normal, normal, axial);
+      c.stiffness += 2.0 * n * curvature * l;
+      c.rotationalStiffness += Vec3(1.0, 1.0, 0.0) * (2.0 * n * curvature * l * l * l / 12.0);
     }
   }
-  return terms;
+}
+
+void ContactDampingEffect::addStabilityTerms(std::vector<ContactStabilityTerms>& terms) const {
+  const Scene& scene = scene_;
+  const std::vector<char> used = usedTypes(scene);
+  const double n = kContactCoordination, rMax = maxRadius(scene);
+  for (std::size_t a = 0; a < used.size(); ++a) {
+    if (!used[a]) continue;
+    const ElementType& ta = scene.elementTypes[a];
+    const double l = ta.length, r = effectiveRadius(ta);
+    ContactStabilityTerms& c = terms[a];
+    const ContactDampingSpec& d = spec_;
+    const double lambda = l + r + rMax, rc = r + 0.5 * d.fullGap;
+    const double rn2 = 0.25 * l * l + rc * rc;
+    c.damping += 2.0 * n * d.translational * lambda;
+    const double normal = 2.0 * n * (d.translational * lambda * rn2 + d.rotational * lambda);
+    const double axial = 2.0 * n * (d.translational * lambda * rc * rc + d.rotational * lambda);
+    c.rotationalDamping += Vec3(normal, normal, axial);
+  }
 }
 
 ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle) {

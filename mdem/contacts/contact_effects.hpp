@@ -1,7 +1,8 @@
 #pragma once
-// Contacts as effects: "vdw_contact" (conservative, energy reported as Energies::vdw) and
-// "contact_damping" (dashpots). Either one builds a shared neighbourhood (filament topology and
-// neighbour list); a scene naming neither builds nothing (no list, no loop).
+// Contacts as effects: "vdw_contact" (conservative, ledger entry "vdw") and "contact_damping"
+// (dashpots, ledger entry "contact_dissipated"). Either one builds the neighbourhood they share
+// (filament topology and neighbour list); a scene naming neither builds nothing (no list, no
+// loop).
 //
 // Kernels run in parallel over the pairs into a per-pair buffer; each element then gathers its
 // pairs' contributions in a fixed order, so results do not depend on the number of threads.
@@ -38,6 +39,10 @@ class ContactNeighbourhood {
     s.centre = near + periodicity_.minimumImage(s.centre - near);
     return s;
   }
+  // The list's state (pairs and the positions it was built at), so that a resumed run rebuilds
+  // at the same steps as an uninterrupted one.
+  void saveList(BinaryWriter& out) const { list_.save(out); }
+  void loadList(BinaryReader& in, int elementCount) { list_.load(in, elementCount); }
   // Accumulated seconds spent rebuilding and checking the list (for benchmarks).
   double seconds = 0.0;
 
@@ -50,10 +55,21 @@ class ContactNeighbourhood {
 
 class VdwContactEffect : public Effect {
  public:
-  VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
+  VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood, bool ownsNeighbourhood);
   std::string name() const override { return "vdw_contact"; }
-  void addForces(State& state) override;
-  Energies energy(const State& state) const override;
+  bool hasPrepare() const override { return true; }
+  void prepare(const State& state, double time) override;  // refreshes the neighbour list
+  int itemCount() const override { return static_cast<int>(results_.size()); }
+  void computeItems(const State& state, double time, int lo, int hi) override;
+  bool couplesFilaments() const override { return true; }
+  void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const override;
+  // Entry "vdw".
+  void reportEnergy(const State& state, EnergyLedger& ledger) const override;
+  void addStabilityTerms(std::vector<ContactStabilityTerms>& perType) const override;
+  const ContactNeighbourhood* contactNeighbourhood() const override { return nb_.get(); }
+  void saveState(BinaryWriter& out) const override;
+  void loadState(BinaryReader& in) override;
+
   // Largest centre distance at which two elements of the scene interact.
   static double interactionRange(const Scene& scene);
   // Tube types: the pair potential (null for bricks). Bricks: the face-to-face model (null for tubes).
@@ -70,6 +86,7 @@ class VdwContactEffect : public Effect {
     std::unique_ptr<TubePairPotential> potential;
     std::unique_ptr<IsotropicVdw> isotropic;
   };
+  const Scene& scene_;
   VdwContactSpec spec_;
   QuadratureRule rule_;
   int typeCount_ = 0;
@@ -77,36 +94,45 @@ class VdwContactEffect : public Effect {
   std::unique_ptr<FaceContactModel> face_;  // when the elements are bricks
   std::vector<double> width_, length_;      // per type
   std::shared_ptr<ContactNeighbourhood> nb_;
+  bool ownsNeighbourhood_;  // saves the shared list in checkpoints
   std::vector<ContactPairResult> results_;
 };
 
 class ContactDampingEffect : public Effect {
  public:
-  ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood);
+  ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood, bool ownsNeighbourhood);
   std::string name() const override { return "contact_damping"; }
-  void addForces(State& state) override;
-  // Stores nothing; reports the dissipated work in Energies::contactDissipated.
-  Energies energy(const State&) const override;
+  bool hasPrepare() const override { return true; }
+  void prepare(const State& state, double time) override;
+  int itemCount() const override { return static_cast<int>(results_.size()); }
+  void computeItems(const State& state, double time, int lo, int hi) override;
+  bool couplesFilaments() const override { return true; }
+  void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const override;
+  bool hasFinish() const override { return true; }
+  void finish(const State& state, double time) override;  // charges the dissipated work
+  // Stores nothing; entry "contact_dissipated" (EnergyKind::Dissipated).
+  void reportEnergy(const State& state, EnergyLedger& ledger) const override;
+  void addStabilityTerms(std::vector<ContactStabilityTerms>& perType) const override;
+  const ContactNeighbourhood* contactNeighbourhood() const override { return nb_.get(); }
+  void saveState(BinaryWriter& out) const override;
+  void loadState(BinaryReader& in) override;
   static double interactionRange(const Scene& scene);
 
  private:
   // Work: each force evaluation at time t charges its power (sum over pairs of
-  // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one.
+  // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one,
+  // summed over the pairs in their order (independent of the thread count).
   double dissipated_ = 0.0, lastTime_ = 0.0;
+  const Scene& scene_;
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;
+  bool ownsNeighbourhood_;
   std::vector<ContactPairResult> results_;
+  std::vector<double> power_;  // per pair
 };
 
-// The contact effects named by the scene (null when not named).
-struct ContactEffects {
-  std::unique_ptr<VdwContactEffect> vdw;
-  std::unique_ptr<ContactDampingEffect> damping;
-  std::shared_ptr<ContactNeighbourhood> neighbourhood;
-};
-ContactEffects makeContactEffects(const Scene& scene);
-
-// Contact terms of the critical time step (stability.hpp), per element type. Contacts change
+// Contact terms of the critical time step (stability.hpp, Effect::addStabilityTerms), per
+// element type. Contacts change
 // during a run, so each element is taken as crowded: in contact along its whole length with
 // kContactCoordination neighbouring tubes (a close-packed bundle), each contact counted twice
 // (Gershgorin: the element's own row and its coupling to the neighbour).
@@ -120,7 +146,6 @@ ContactEffects makeContactEffects(const Scene& scene);
 // Measured (docs/mdem-contacts.md): two crossed tubes at h = 2e-5 ns blow up for gamma between 5
 // and 10 pN ns/nm^2; this estimate admits gamma up to about 2.7 there.
 inline constexpr int kContactCoordination = 6;
-std::vector<ContactStabilityTerms> contactStabilityTerms(const Scene& scene, const ContactEffects& effects);
 
 // Pairs in van der Waals contact (wall gap of the closest points below maxGap) whose axes make
 // an angle below maxAngle (either direction): the "aligned pairs" of the tensile analysis.

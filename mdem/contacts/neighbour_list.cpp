@@ -1,5 +1,7 @@
 #include "mdem/contacts/neighbour_list.hpp"
 
+#include "mdem/binary_io.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -163,6 +165,11 @@ void NeighbourList::build(const Bodies& b, const FilamentTopology& topology) {
   pairs_.clear();
   for (int i = 0; i < n; ++i)
     for (int j : partners[i]) pairs_.emplace_back(i, j);
+  buildIncidence(n);
+  ++builds_;
+}
+
+void NeighbourList::buildIncidence(int n) {
   start_.assign(n + 1, 0);
   for (const auto& [i, j] : pairs_) ++start_[i + 1], ++start_[j + 1];
   for (int i = 0; i < n; ++i) start_[i + 1] += start_[i];
@@ -172,7 +179,30 @@ void NeighbourList::build(const Bodies& b, const FilamentTopology& topology) {
     incident_[fill[pairs_[p].first]++] = 2 * p;
     incident_[fill[pairs_[p].second]++] = 2 * p + 1;
   }
-  ++builds_;
+}
+
+void NeighbourList::save(BinaryWriter& out) const {
+  out.write<std::int64_t>(builds_);
+  out.writeVector(builtPosition_);
+  out.writeVector(builtAxis_);
+  out.write<std::uint64_t>(pairs_.size());
+  for (const auto& [i, j] : pairs_) out.write<std::int32_t>(i), out.write<std::int32_t>(j);
+}
+
+void NeighbourList::load(BinaryReader& in, int n) {
+  builds_ = in.read<std::int64_t>();
+  builtPosition_ = in.readVector<Vec3>("neighbour list positions");
+  builtAxis_ = in.readVector<Vec3>("neighbour list axes");
+  if (static_cast<int>(builtPosition_.size()) != n || builtAxis_.size() != builtPosition_.size())
+    in.fail("neighbour list of " + std::to_string(builtPosition_.size()) + " elements for a scene of " + std::to_string(n));
+  const std::uint64_t np = in.read<std::uint64_t>();
+  if (np > in.remaining() / 8) in.fail("neighbour list pair count beyond the end of the data");
+  pairs_.resize(np);
+  for (auto& [i, j] : pairs_) {
+    i = in.read<std::int32_t>(), j = in.read<std::int32_t>();
+    if (i < 0 || j <= i || j >= n) in.fail("a neighbour pair (" + std::to_string(i) + ", " + std::to_string(j) + ") outside the scene");
+  }
+  buildIncidence(n);
 }
 
 }  // namespace mesochain::mdem

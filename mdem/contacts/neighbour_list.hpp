@@ -15,6 +15,9 @@
 
 namespace mesochain::mdem {
 
+class BinaryWriter;
+class BinaryReader;
+
 struct FilamentTopology {
   std::vector<int> filament;      // per element: filament id (ids ordered by first element)
   std::vector<int> place;         // per element: rank along its filament
@@ -47,11 +50,16 @@ class NeighbourList {
   long builds() const { return builds_; }
   double listRange() const { return range_ + skin_; }
 
+  // Checkpoints: the pairs, the positions and axes of the last build and the build count.
+  void save(BinaryWriter& out) const;
+  void load(BinaryReader& in, int elementCount);
+
   // Number of NeighbourList objects alive (a scene without contacts must build none).
   static int live();
 
  private:
   void build(const Bodies& bodies, const FilamentTopology& topology);
+  void buildIncidence(int elementCount);
   double range_, skin_;
   Periodicity periodicity_;
   std::vector<std::pair<int, int>> pairs_;

@@ -22,7 +22,7 @@ constexpr int kBonds = kElements - 1;
 struct Relaxed {
   Vec3 tipDisplacement;
   Vec3 tipRotation;
-  Energies energies;
+  EnergyLedger energies;
 };
 
 Relaxed relaxCantilever(const Load& load) {
@@ -58,7 +58,7 @@ TEST(MdemCantilever, TipTwistUnderTorque) {
   const Relaxed r = relaxCantilever(l);
   const double expected = kBonds * kL * l.moment.z() / (kShear * polar());
   EXPECT_NEAR(r.tipRotation.z() / expected, 1.0, 1e-4);
-  EXPECT_NEAR(r.energies.bonds.twisting / (0.5 * l.moment.z() * expected), 1.0, 1e-4);
+  EXPECT_NEAR(r.energies["twisting"] / (0.5 * l.moment.z() * expected), 1.0, 1e-4);
 }
 
 TEST(MdemCantilever, TipBendingAboutEachAxis) {
@@ -70,7 +70,7 @@ TEST(MdemCantilever, TipBendingAboutEachAxis) {
     const double inertia = axis == 0 ? inertiaX() : inertiaY();
     const double expected = kBonds * kL * l.moment[axis] / (kYoung * inertia);
     EXPECT_NEAR(r.tipRotation[axis] / expected, 1.0, 1e-4) << "axis " << axis;
-    EXPECT_NEAR(r.energies.bonds.bending / (0.5 * l.moment[axis] * expected), 1.0, 1e-4);
+    EXPECT_NEAR(r.energies["bending"] / (0.5 * l.moment[axis] * expected), 1.0, 1e-4);
   }
   // The two bending stiffnesses differ (I_x / I_y = (w / h)^2 = 9).
   EXPECT_NEAR(inertiaX() / inertiaY(), 9.0, 1e-12);
@@ -83,7 +83,7 @@ TEST(MdemCantilever, AxialStretch) {
   const Relaxed r = relaxCantilever(l);
   const double expected = kBonds * kL * l.force.z() / (kYoung * area());
   EXPECT_NEAR(r.tipDisplacement.z() / expected, 1.0, 1e-4);
-  EXPECT_NEAR(r.energies.bonds.stretching / (0.5 * l.force.z() * expected), 1.0, 1e-4);
+  EXPECT_NEAR(r.energies["stretching"] / (0.5 * l.force.z() * expected), 1.0, 1e-4);
 }
 
 }  // namespace

@@ -87,14 +87,14 @@ TEST(MdemDynamics, RotatedSceneGivesSameEnergies) {
   for (int block = 0; block < 10; ++block) {
     sa.run(300);
     sb.run(300);
-    const Energies ea = sa.energies(), eb = sb.energies();
+    const EnergyLedger ea = sa.energies(), eb = sb.energies();
     const double scale = ea.total();
-    EXPECT_NEAR(ea.kineticTranslational, eb.kineticTranslational, 1e-9 * scale);
-    EXPECT_NEAR(ea.kineticRotational, eb.kineticRotational, 1e-9 * scale);
-    EXPECT_NEAR(ea.bonds.stretching, eb.bonds.stretching, 1e-9 * scale);
-    EXPECT_NEAR(ea.bonds.shearing, eb.bonds.shearing, 1e-9 * scale);
-    EXPECT_NEAR(ea.bonds.twisting, eb.bonds.twisting, 1e-9 * scale);
-    EXPECT_NEAR(ea.bonds.bending, eb.bonds.bending, 1e-9 * scale);
+    EXPECT_NEAR(ea["kinetic_translational"], eb["kinetic_translational"], 1e-9 * scale);
+    EXPECT_NEAR(ea["kinetic_rotational"], eb["kinetic_rotational"], 1e-9 * scale);
+    EXPECT_NEAR(ea["stretching"], eb["stretching"], 1e-9 * scale);
+    EXPECT_NEAR(ea["shearing"], eb["shearing"], 1e-9 * scale);
+    EXPECT_NEAR(ea["twisting"], eb["twisting"], 1e-9 * scale);
+    EXPECT_NEAR(ea["bending"], eb["bending"], 1e-9 * scale);
   }
 }
 

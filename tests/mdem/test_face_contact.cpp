@@ -224,18 +224,18 @@ TEST(MdemFaceContact, TwoBricksConserveEnergyWithoutDamping) {
   for (double fraction : {0.15, 0.075}) {
     s.run.timeStepFraction = fraction;
     Simulation sim(s);
-    const Energies e0 = sim.energies();
-    double maxDev = 0.0, minVdw = e0.vdw;
+    const EnergyLedger e0 = sim.energies();
+    double maxDev = 0.0, minVdw = e0["vdw"];
     while (sim.time() < 0.8e-3) {
       sim.run(10);
-      const Energies e = sim.energies();
+      const EnergyLedger e = sim.energies();
       maxDev = std::max(maxDev, std::abs(e.total() - e0.total()));
-      minVdw = std::min(minVdw, e.vdw);
+      minVdw = std::min(minVdw, e["vdw"]);
     }
-    const double released = e0.vdw - minVdw;
+    const double released = e0["vdw"] - minVdw;
     const Bodies& b = sim.bodies();
     const Vec3 p = b.mass[0] * b.velocity[0] + b.mass[1] * b.velocity[1];
-    std::printf("bricks: vdW %.1f -> min %.1f zJ, max |E - E0| %.3g zJ, h = %.3g ns\n", e0.vdw, minVdw, maxDev,
+    std::printf("bricks: vdW %.1f -> min %.1f zJ, max |E - E0| %.3g zJ, h = %.3g ns\n", e0["vdw"], minVdw, maxDev,
                 sim.timeStep());
     EXPECT_GT(released, 800.0);
     EXPECT_LT(maxDev, 0.01 * released);

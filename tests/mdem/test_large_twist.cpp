@@ -40,10 +40,10 @@ void checkTwist(Scene s, int bonds, double theta, double polarMoment) {
   double sum = 0.0;
   for (const Bond& b : sim.bonds()) sum += b.theta.z();
   EXPECT_NEAR(sum / theta, 1.0, 1e-6);
-  const Energies e = sim.energies();
+  const EnergyLedger e = sim.energies();
   const double expected = kShear * polarMoment * theta * theta / (2.0 * bonds * kL);
-  EXPECT_NEAR(e.bonds.twisting / expected, 1.0, 1e-4);
-  EXPECT_LT(e.bonds.bending + e.bonds.shearing + e.bonds.stretching, 1e-8 * expected);
+  EXPECT_NEAR(e["twisting"] / expected, 1.0, 1e-4);
+  EXPECT_LT(e["bending"] + e["shearing"] + e["stretching"], 1e-8 * expected);
 }
 
 TEST(MdemLargeTwist, BricksByPiAndThreePi) {

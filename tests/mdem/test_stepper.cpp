@@ -1,17 +1,25 @@
 // The fused time step (stepper.hpp) gives the same trajectory, bit for bit, on 1 and 2 OpenMP
 // threads, in its barrier-free scheme (independent filaments) and its barrier scheme (one long
-// filament), and the same as the two-halves step used when other effects are present.
+// filament, or contacts coupling the filaments), and the same as the plain definition of the step
+// (velocity Verlet with one serial force evaluation of every effect per step).
 #include <omp.h>
 
 #include <gtest/gtest.h>
 
 #include "chain_fixture.hpp"
+#include "contact_fixture.hpp"
+#include "mdem/bond_effect.hpp"
+#include "mdem/contacts/network_generator.hpp"
+#include "mdem/integrator.hpp"
 #include "mdem/stepper.hpp"
 
 namespace mesochain::mdem {
 namespace {
 
 using namespace testing;
+
+// Scenes above this many elements run the parallel region on more than one thread.
+constexpr int kSmallScene = 512;
 
 // `filaments` filaments of `length` elements side by side, shaken, with loads, a fixed root,
 // a hinge and both dampings: every per-element code path.
@@ -53,6 +61,12 @@ void expectIdentical(const Bodies& a, const Bodies& b) {
   }
 }
 
+// The partition a simulation of `s` would use on `threads` threads (bonds only).
+ThreadPartition partitionOf(const Scene& s, int threads) {
+  BondEffect bonds(s.bonds, s.bodies.size());
+  return partitionElements(s.bodies.size(), s.bonds, EffectSequence({&bonds}), threads);
+}
+
 Bodies runWithThreads(const Scene& s, int threads, long steps) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
@@ -67,11 +81,11 @@ Bodies runWithThreads(const Scene& s, int threads, long steps) {
 TEST(MdemStepper, SameResultOnOneAndTwoThreads) {
   // 6 filaments of 100: cut between filaments, no barrier inside the run.
   const Scene independent = shakenFilaments(6, 100);
-  EXPECT_TRUE(partitionByBonds(600, independent.bonds, 2).independent);
+  EXPECT_TRUE(partitionOf(independent, 2).independent);
   expectIdentical(runWithThreads(independent, 1, 100), runWithThreads(independent, 2, 100));
   // One filament of 600: no cut, the barrier scheme.
   const Scene single = shakenFilaments(1, 600);
-  EXPECT_FALSE(partitionByBonds(600, single.bonds, 2).independent);
+  EXPECT_FALSE(partitionOf(single, 2).independent);
   expectIdentical(runWithThreads(single, 1, 40), runWithThreads(single, 2, 40));
   // And the runs really moved.
   EXPECT_GT((runWithThreads(single, 1, 40).position[599] - single.bodies.position[599]).norm(), 1e-5);
@@ -80,40 +94,76 @@ TEST(MdemStepper, SameResultOnOneAndTwoThreads) {
 TEST(MdemStepper, PartitionCutsOnlyBetweenFilaments) {
   // 220 elements, even shares at 73 and 146: the nearest cuts between filaments, 80 and 140.
   const Scene s = shakenFilaments(11, 20);
-  const ThreadPartition p = partitionByBonds(220, s.bonds, 3);
+  const ThreadPartition p = partitionOf(s, 3);
   ASSERT_TRUE(p.independent);
   EXPECT_EQ(p.elementStart[1], 80);
   EXPECT_EQ(p.elementStart[2], 140);
   // Three filaments of 100 on two threads: no cut within 10% of 150.
-  EXPECT_FALSE(partitionByBonds(300, shakenFilaments(3, 100).bonds, 2).independent);
-  EXPECT_EQ(p.bondStart[3], static_cast<int>(s.bonds.size()));
+  EXPECT_FALSE(partitionOf(shakenFilaments(3, 100), 2).independent);
+  ASSERT_EQ(p.itemStart.size(), 1u);  // the bonds
+  EXPECT_EQ(p.itemStart[0][3], static_cast<int>(s.bonds.size()));
   for (int t = 0; t < 3; ++t)
-    for (int e = p.bondStart[t]; e < p.bondStart[t + 1]; ++e) {
-      const Bond& b = s.bonds[p.bondOrder[e]];
+    for (int e = p.itemStart[0][t]; e < p.itemStart[0][t + 1]; ++e) {
+      const Bond& b = s.bonds[p.itemOrder[0][e]];
       EXPECT_GE(b.a, p.elementStart[t]);
       EXPECT_LT(b.b, p.elementStart[t + 1]);
     }
 }
 
-TEST(MdemStepper, FusedStepEqualsTwoHalves) {
+TEST(MdemStepper, FusedStepEqualsThePlainStep) {
   const Scene s = shakenFilaments(2, 400);
-  Simulation sim(s);  // for the time step and the initial forces
+  Simulation sim(s);  // the fused stepper
+  Simulation plain(s);  // its effects, driven one serial force evaluation per step
   const double h = sim.timeStep();
-  State a = sim.state(), b = sim.state();
-  BondEffect bondsA(s.bonds, s.bodies.size()), bondsB(s.bonds, s.bodies.size());
-  LoadEffect loads(s.boundary.loads, s.bodies);
-  LocalDamping local(s.localDampingAlpha);
-  ViscousDamping viscous(s.viscousRate);
   const KinematicMap km(s.boundary, s.bodies.size());
-  advanceFused(a, {&bondsA, &loads, &local, &viscous}, km, h, 50);
+  std::vector<Effect*> effects;
+  for (const EffectPtr& e : plain.effects()) effects.push_back(e.get());
+  const EffectSequence sequence(effects);
+  State& b = plain.state();
+  sim.run(50);
   for (int k = 0; k < 50; ++k) {
-    firstHalf(b, km, h);
-    std::fill(b.bodies.force.begin(), b.bodies.force.end(), Vec3::Zero());
-    std::fill(b.bodies.torque.begin(), b.bodies.torque.end(), Vec3::Zero());
-    secondHalf(b, {&bondsB, &loads, &local, &viscous}, km, h);
+    for (int i = 0; i < b.bodies.size(); ++i) {
+      kickElement(b.bodies, i, 0.5 * h);
+      km.applyElement(b.bodies, i, b.time + 0.5 * h);
+      driftElement(b.bodies, i, h, km.kinematicRotation[i] != 0);
+    }
+    b.time += h;
+    evaluateForces(b, sequence, km, true, true);
+    for (int i = 0; i < b.bodies.size(); ++i) {
+      kickElement(b.bodies, i, 0.5 * h);
+      km.applyElement(b.bodies, i, b.time);
+    }
   }
-  EXPECT_EQ(a.time, b.time);
-  expectIdentical(a.bodies, b.bodies);
+  EXPECT_EQ(sim.time(), b.time);
+  expectIdentical(sim.bodies(), b.bodies);
+}
+
+TEST(MdemStepper, ContactsInTheParallelRegionAreThreadIndependent) {
+  // A random network with van der Waals contacts, dashpots and local damping: the contact
+  // phases (neighbour list, pairs, dissipated work) run inside the stepper's region.
+  Scene s = tubeScene({"bonds", "vdw_contact", "contact_damping", "local_damping"});
+  NetworkSpec n;
+  n.tubes = 60, n.elementsPerTube = 12;
+  n.size = Vec3(80.0, 80.0, 6.0);
+  n.waviness = 0.1, n.minimumGap = 0.2, n.seed = 7;
+  generateNetwork(s, n);
+  s.contacts.damping.translational = 0.5;
+  s.localDampingAlpha = 0.2;
+  s.run.timeStepFraction = 0.5;
+  ASSERT_GT(s.bodies.size(), kSmallScene);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  Simulation one(s);
+  one.run(120);
+  omp_set_num_threads(2);
+  Simulation two(s);
+  two.run(60), two.run(60);
+  omp_set_num_threads(saved);
+  expectIdentical(one.bodies(), two.bodies());
+  const EnergyLedger a = one.energies(), b = two.energies();
+  EXPECT_EQ(a["contact_dissipated"], b["contact_dissipated"]);
+  EXPECT_GT(a["contact_dissipated"], 0.0);
+  EXPECT_LT(a["vdw"], 0.0);
 }
 
 }  // namespace

@@ -82,12 +82,12 @@ TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
     rec.record(sim);
   }
   const TensileSample& last = rec.samples().back();
-  const Energies& e = last.energies;
-  const double parts = e.bonds.stretching + e.bonds.shearing + e.bonds.twisting + e.bonds.bending + e.vdw +
-                       e.kineticTranslational + e.kineticRotational;
+  const EnergyLedger& e = last.energies;
+  const double parts = e["stretching"] + e["shearing"] + e["twisting"] + e["bending"] + e["vdw"] +
+                       e.kinetic();
   const double change = e.total() - rec.samples().front().energies.total();
   std::printf("grip work %.6g zJ, energy change %.6g zJ (stretching %.6g, kinetic %.6g)\n", last.gripWork, change,
-              e.bonds.stretching, e.kineticTranslational);
+              e["stretching"], e["kinetic_translational"]);
   EXPECT_NEAR(parts, e.total(), 1e-9 * std::abs(e.total()));
   EXPECT_GT(last.gripWork, 0.0);
   EXPECT_NEAR(change, last.gripWork, 0.01 * last.gripWork);

@@ -75,10 +75,10 @@ TEST(MdemTimeSeriesPlot, NonFiniteSamplesDoNotStopThePlot) {
   std::ofstream(dir / "s.toml") << scene("");
   const Scene s = loadScene((dir / "s.toml").string());
   TimeSeriesPlot plot({});
-  Energies e;
   for (int k = 0; k < 5; ++k) {
-    e.kineticTranslational = k;
-    e.bonds.twisting = k == 3 ? std::numeric_limits<double>::infinity() : 0.5 * k;
+    EnergyLedger e;
+    e.add("kinetic_translational", EnergyKind::Kinetic, k);
+    e.add("twisting", EnergyKind::Potential, k == 3 ? std::numeric_limits<double>::infinity() : 0.5 * k);
     plot.record(0.1 * k, e, s.bodies);
   }
   EXPECT_EQ(plot.samples(), 5u);

@@ -1,0 +1,73 @@
+#include "mdem/effect_registry.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+#include "mdem/scene.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+// Function-local static: registrations run during static initialisation of other files.
+std::vector<EffectRegistration>& registry() {
+  static std::vector<EffectRegistration> r;
+  return r;
+}
+}  // namespace
+
+bool EffectBuild::named(std::string_view effect) const {
+  return std::find(scene.effects.begin(), scene.effects.end(), effect) != scene.effects.end();
+}
+
+void Effect::addForces(State& state) {
+  Bodies& s = state.bodies;
+  if (hasPrepare()) prepare(state, state.time);
+  computeItems(state, state.time, 0, itemCount());
+  gather(state, state.time, 0, s.size(), s.force.data(), s.torque.data());
+  if (hasFinish()) finish(state, state.time);
+}
+
+bool registerEffect(EffectRegistration r) {
+  for (const EffectRegistration& o : registry())
+    if (o.name == r.name) throw std::logic_error("mdem effect '" + r.name + "' registered twice");
+  registry().push_back(std::move(r));
+  return true;
+}
+
+std::vector<const EffectRegistration*> registeredEffects() {
+  std::vector<const EffectRegistration*> out;
+  for (const EffectRegistration& r : registry()) out.push_back(&r);
+  std::sort(out.begin(), out.end(), [](const EffectRegistration* a, const EffectRegistration* b) {
+    return a->order != b->order ? a->order < b->order : a->name < b->name;
+  });
+  return out;
+}
+
+const EffectRegistration* findEffect(std::string_view name) {
+  for (const EffectRegistration& r : registry())
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
+std::vector<EffectPtr> buildEffects(const Scene& scene) {
+  std::string known;
+  for (const EffectRegistration* r : registeredEffects())
+    if (r->listable) known += (known.empty() ? "\"" : ", \"") + r->name + "\"";
+  for (std::size_t k = 0; k < scene.effects.size(); ++k) {
+    const std::string& e = scene.effects[k];
+    const EffectRegistration* r = findEffect(e);
+    if (!r || !r->listable) throw InputError(scene.source, "key effects", "\"" + e + "\"", "one of " + known);
+    if (std::find(scene.effects.begin(), scene.effects.begin() + k, e) != scene.effects.begin() + k)
+      throw InputError(scene.source, "key effects", "\"" + e + "\" listed twice", "each effect once");
+  }
+  EffectBuild build(scene);
+  std::vector<EffectPtr> effects;
+  for (const EffectRegistration* r : registeredEffects()) {
+    const bool wanted = r->implicit ? r->implicit(scene) : build.named(r->name);
+    if (wanted) effects.push_back(r->make(build));
+  }
+  return effects;
+}
+
+}  // namespace mesochain::mdem
