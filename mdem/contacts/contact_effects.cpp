@@ -33,9 +33,6 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     }})
 
 namespace {
-bool named(const Scene& s, const char* name) {
-  return std::find(s.effects.begin(), s.effects.end(), name) != s.effects.end();
-}
 
 double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 

@@ -226,7 +226,18 @@ TEST_P(EffectConformance, PassesTheSharedChecks) {
     const double balance = ek.total() + ek.dissipated() - e0.total();
     worst = numerical ? std::max(worst, balance) : std::max(worst, std::abs(balance));
   }
-  if (!loads || numerical) EXPECT_LT(worst, 2e-3 * std::abs(e0.total()) + 1e-12) << c.effect << " energy balance";
+  // Velocity Verlet on a linear system: each mode's energy stays within x / (1 - x) of a
+  // conserved shadow energy, x = (h omega_max)^2 / 4 (test_dynamics.cpp); the contacts and
+  // moments here are mildly nonlinear, so twice that. Dashpots see the half-step velocities of
+  // the scheme, so their work is first order in h: 1 % of the work dissipated on top
+  // (test_contact_stability.cpp measures the same).
+  const double x = std::pow(sim.timeStep() * sim.stability().omegaMax, 2) / 4.0;
+  const double bound = 2.0 * x / (1.0 - x) * std::abs(e0.total()) + 0.01 * sim.energies().dissipated();
+  std::printf("%s (%s): worst energy balance %.3g zJ (bound %.3g zJ)\n", c.effect.c_str(), c.label.c_str(), worst,
+              bound);
+  if (!loads || numerical) {
+    EXPECT_LT(worst, bound) << c.effect << " energy balance";
+  }
 }
 
 std::string caseName(const ::testing::TestParamInfo<ConformanceCase>& p) {
