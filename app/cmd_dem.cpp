@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "common/errors.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
 
@@ -19,6 +20,8 @@ struct DemOptions {
   std::string scene;
   std::string outputDir;
   bool quiet = false;
+  bool resume = false;
+  bool overwrite = false;
 };
 
 void drawProgress(double fraction) {
@@ -41,6 +44,10 @@ Command makeDemCommand() {
     (*sub)->add_option("-o,--output-dir", opt->outputDir,
                        "folder for the outputs (default: output.directory of the scene)");
     (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
+    (*sub)->add_flag("--resume", opt->resume,
+                     "continue the interrupted run from the checkpoint in the output folder (bit for bit)");
+    (*sub)->add_flag("--overwrite", opt->overwrite,
+                     "start afresh although the output folder holds an interrupted run's checkpoint");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
@@ -48,8 +55,16 @@ Command makeDemCommand() {
     const std::string dir = opt->outputDir.empty() ? scene.output.directory : opt->outputDir;
     std::function<void(double)> progress;
     if (!opt->quiet) progress = drawProgress;
-    const mdem::RunSummary r = mdem::runScene(scene, dir, progress);
+    if (opt->resume && opt->overwrite)
+      throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
+    mdem::RunOptions options;
+    options.resume = opt->resume, options.overwrite = opt->overwrite;
+    const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
     if (!opt->quiet) std::fprintf(stderr, "\n");
+    if (!r.removedStale.empty())
+      std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
+                               r.removedStale.front());
+    if (r.resumedFromStep >= 0) std::cout << fmt::format("resumed from the checkpoint at step {}\n", r.resumedFromStep);
     const mdem::EnergyLedger& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",

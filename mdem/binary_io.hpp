@@ -34,7 +34,12 @@ class BinaryWriter {
   template <class T>
   void writeVector(const std::vector<T>& v) {
     write<std::uint64_t>(v.size());
-    for (const T& x : v) write(x);
+    if constexpr (std::is_arithmetic_v<T>) {
+      const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+      bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
+    } else {
+      for (const T& x : v) write(x);
+    }
   }
   const std::vector<unsigned char>& bytes() const { return bytes_; }
 
@@ -77,8 +82,15 @@ class BinaryReader {
     const std::uint64_t n = read<std::uint64_t>();
     if (n > size_ - pos_) fail(what + ": a count of " + std::to_string(n) + " beyond the end of the data");
     std::vector<T> v;
-    v.reserve(n);
-    for (std::uint64_t k = 0; k < n; ++k) v.push_back(read<T>());
+    if constexpr (std::is_arithmetic_v<T>) {
+      need(n * sizeof(T));
+      v.resize(n);
+      std::memcpy(v.data(), data_ + pos_, n * sizeof(T));
+      pos_ += n * sizeof(T);
+    } else {
+      v.reserve(n);
+      for (std::uint64_t k = 0; k < n; ++k) v.push_back(read<T>());
+    }
     return v;
   }
   // Reads a count and throws unless it equals `expected` (the checkpoint is of another scene).

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::mdem {
@@ -17,27 +18,26 @@ std::vector<std::string> energyColumns(const EnergyLedger& layout) {
   return c;
 }
 
-EnergyCsvWriter::EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes)
-    : out_(path), columns_(energyColumns(layout)), probes_(std::move(probes)) {
-  if (!out_) throw InputError(path, "", "a file that cannot be written", "a writable path");
-  out_ << "step,time_ns";
-  for (const std::string& c : columns_) out_ << "," << (c.empty() ? "total" : c) << "_zJ";
+EnergyCsvWriter::EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes,
+                                 std::int64_t resumeAt)
+    : out_(path, resumeAt), columns_(energyColumns(layout)), probes_(std::move(probes)) {
+  if (out_.resumed()) return;
+  std::string h = "step,time_ns";
+  for (const std::string& c : columns_) h += "," + (c.empty() ? std::string("total") : c) + "_zJ";
   for (int p : probes_)
-    for (const char* c : {"ux_nm", "uy_nm", "uz_nm", "rx_rad", "ry_rad", "rz_rad"})
-      out_ << ",p" << p << "_" << c;
-  out_ << "\n";
+    for (const char* c : {"ux_nm", "uy_nm", "uz_nm", "rx_rad", "ry_rad", "rz_rad"}) h += fmt::format(",p{}_{}", p, c);
+  out_.write(h + "\n");
 }
 
 void EnergyCsvWriter::write(long step, double time, const EnergyLedger& e, const Bodies& b) {
-  out_ << fmt::format("{},{:.10g}", step, time);
-  for (const std::string& c : columns_) out_ << fmt::format(",{:.12g}", c.empty() ? e.total() : e[c]);
+  std::string row = fmt::format("{},{:.10g}", step, time);
+  for (const std::string& c : columns_) row += fmt::format(",{:.12g}", c.empty() ? e.total() : e[c]);
   for (int p : probes_) {
     const Vec3 u = b.position[p] - b.initialPosition[p];
     const Vec3& r = b.accumulatedRotation[p];
-    out_ << fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}", u.x(), u.y(), u.z(),
-                        r.x(), r.y(), r.z());
+    row += fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}", u.x(), u.y(), u.z(), r.x(), r.y(), r.z());
   }
-  out_ << "\n";
+  out_.write(row + "\n");
 }
 
 void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<ElementType>& types,
@@ -60,8 +60,8 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
 
 void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<Bond>& bonds,
                    double time) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "", "a file that cannot be written", "a writable path");
+  AtomicOutputFile file(path);  // a kill leaves the previous frame or none, never half of one
+  std::ofstream& out = file.stream();
   const int n = b.size();
   out << "# vtk DataFile Version 3.0\n";
   out << fmt::format("mesochain mdem frame, time {:.10g} ns, lengths in nm\n", time);
@@ -91,6 +91,7 @@ void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<B
   }
   out << "VECTORS velocity double\n";
   for (const Vec3& v : b.velocity) out << fmt::format("{:.10g} {:.10g} {:.10g}\n", v.x(), v.y(), v.z());
+  file.commit();
 }
 
 }  // namespace mesochain::mdem

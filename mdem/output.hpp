@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "mdem/append_file.hpp"
 #include "mdem/effect.hpp"
 #include "mdem/parallel_bond.hpp"
 #include "mdem/scene.hpp"
@@ -19,12 +20,15 @@ namespace mesochain::mdem {
 // (accumulated rotation, integral of omega dt). Only the effects a scene builds have columns.
 class EnergyCsvWriter {
  public:
-  // `layout`: a ledger of the run (its names and kinds fix the columns).
-  EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes);
+  // `layout`: a ledger of the run (its names and kinds fix the columns). resumeAt >= 0: append
+  // to the file of an interrupted run, cut back to that length (append_file.hpp).
+  EnergyCsvWriter(const std::string& path, const EnergyLedger& layout, std::vector<int> probes,
+                  std::int64_t resumeAt = -1);
   void write(long step, double time, const EnergyLedger& e, const Bodies& b);
+  std::int64_t bytes() const { return out_.bytes(); }
 
  private:
-  std::ofstream out_;
+  AppendFile out_;
   std::vector<std::string> columns_;  // ledger entries in column order ("" = the total)
   std::vector<int> probes_;
 };

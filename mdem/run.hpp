@@ -1,27 +1,45 @@
 #pragma once
-// Runs a loaded scene with its outputs: the loop the `mesochain dem` command drives.
+// Runs a loaded scene with its outputs: the loop the `mesochain dem` command drives, with
+// checkpoints and resume (checkpoint.hpp, docs/scene-file.md "Restart").
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::mdem {
 
+struct RunOptions {
+  // Continue the interrupted run whose checkpoint is in the output folder: outputs are cut back
+  // to the checkpoint and appended to; the result is bit for bit that of an uninterrupted run.
+  bool resume = false;
+  // Start afresh although the output folder holds an interrupted run's checkpoint (it and that
+  // run's outputs are replaced). Without it such a folder is refused.
+  bool overwrite = false;
+  // Tests: stop as if killed once this many steps are done (no final outputs, the checkpoint
+  // left as it was).
+  long interruptAfter = -1;
+};
+
 struct RunSummary {
   long steps = 0;
   double time = 0.0;             // ns
   bool stoppedByCriterion = false;
+  bool interrupted = false;      // RunOptions::interruptAfter reached
+  long resumedFromStep = -1;     // >= 0: resumed from a checkpoint at this step
+  long checkpoints = 0;          // written by this invocation
+  std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting
   EnergyLedger finalEnergies;
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
-  bool dissipatedTracked = false;  // the scene has contact dashpots
+  bool dissipatedTracked = false;  // the scene has an effect that dissipates (dashpots)
   bool tensile = false;            // [tensile]: strain and engineering stress (MPa)
   double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;
 };
 
 // Progress callback receives the fraction of the maximum step count done.
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
-                    const std::function<void(double)>& progress);
+                    const std::function<void(double)>& progress, const RunOptions& options = {});
 
 }  // namespace mesochain::mdem

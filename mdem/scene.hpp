@@ -2,6 +2,7 @@
 // A scene: element and bond types, elements, bonds, boundary conditions, the effects to
 // simulate, run control and outputs. Built by scene_file.cpp from a TOML file, or directly in
 // C++ (tests, benchmarks) with the helpers below. Units: mdem/units.hpp.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,11 @@ struct OutputSpec {
   long framesEvery = 1000;
   std::vector<int> probes;            // elements whose displacement and rotation go to the CSV
   std::string plotPng;                // PNG of the energies and probes against time, "" = none
+  // Checkpoints for --resume (checkpoint.hpp): every this many steps (0 = not by steps) and/or
+  // this many minutes of wall time (0 = not by time); file name in the output folder.
+  long checkpointEvery = 0;
+  double checkpointMinutes = 30.0;
+  std::string checkpoint = "checkpoint.mdem";
 };
 
 // [tensile]: uniaxial tensile test with grips (mdem/tensile.hpp, docs/scene-file.md).
@@ -64,6 +70,7 @@ struct TensileSpec {
 
 struct Scene {
   std::string source = "<scene>";     // file name, for messages
+  std::uint64_t inputHash = 0;        // of the scene (and model) file text; checkpoints check it
   std::vector<ElementType> elementTypes;
   std::vector<BondType> bondTypes;
   Bodies bodies;

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/checkpoint.hpp"
 #include "mdem/contacts/contact_file.hpp"
 #include "mdem/tensile.hpp"
 #include "mdem/toml_reader.hpp"
@@ -14,6 +17,13 @@
 namespace mesochain::mdem {
 
 namespace {
+
+// FNV-1a (64 bit) of a file's bytes, continuing from `seed` (0: the offset basis).
+std::uint64_t hashFileText(const std::string& path, std::uint64_t seed) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return fnv1a(text.data(), text.size(), seed);
+}
 
 int findType(const std::vector<std::string>& names, const TomlTable& t, const std::string& key) {
   const std::string n = t.string(key);
@@ -243,7 +253,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   if (!root.has("output")) return;
   const TomlTable out = root.table("output");
   out.allowOnly({"directory", "energies_csv", "energies_every", "xyz", "vtk_prefix",
-                 "frames_every", "probes", "plot_png"});
+                 "frames_every", "probes", "plot_png", "checkpoint", "checkpoint_every", "checkpoint_minutes"});
   s.output.directory = out.string("directory", ".");
   s.output.energiesCsv = out.string("energies_csv", "");
   s.output.energiesEvery = out.integer("energies_every", 100);
@@ -253,6 +263,11 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   s.output.plotPng = out.string("plot_png", "");
   for (const char* k : {"energies_every", "frames_every"})
     if (out.integer(k, 1) < 1) out.fail(k, std::to_string(out.integer(k)), "at least 1");
+  s.output.checkpoint = out.string("checkpoint", s.output.checkpoint);
+  if (s.output.checkpoint.empty()) out.fail("checkpoint", "an empty name", "a file name for the checkpoints");
+  s.output.checkpointEvery = out.integer("checkpoint_every", 0);
+  if (s.output.checkpointEvery < 0) out.fail("checkpoint_every", std::to_string(s.output.checkpointEvery), "a number of steps >= 0 (0: not by steps)");
+  s.output.checkpointMinutes = out.nonNegative("checkpoint_minutes", s.output.checkpointMinutes);
   if (out.has("probes"))
     for (long p : out.integers("probes"))
       s.output.probes.push_back(elementIndex(p, s.bodies.size(), out, "probes"));
@@ -278,12 +293,14 @@ Scene loadScene(const std::string& path) {
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
   s.source = path;
+  s.inputHash = hashFileText(path, 0);
   if (root.has("model")) {
     std::filesystem::path model = root.string("model");
     if (model.is_relative()) model = std::filesystem::path(path).parent_path() / model;
     if (!std::filesystem::is_regular_file(model))
       root.fail("model", "\"" + model.string() + "\", which does not exist", "an existing model file");
     const toml::value m = parseTomlFile(model.string(), "model file");
+    s.inputHash = hashFileText(model.string(), s.inputHash);
     const TomlTable mroot(m, model.string(), "");
     mroot.allowOnly({"format", "element_types", "bond_types"});
     if (mroot.integer("format", 1) != 1) mroot.fail("format", std::to_string(mroot.integer("format")), "1");

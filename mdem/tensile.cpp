@@ -77,10 +77,10 @@ void setUpTensile(Scene& s) {
     }
 }
 
-TensileRecorder::TensileRecorder(const Scene& scene, const std::string& csvPath) : scene_(scene), area_(scene.tensile.crossSection) {
+TensileRecorder::TensileRecorder(const Scene& scene, const std::string& csvPath, std::int64_t resumeAt)
+    : scene_(scene), area_(scene.tensile.crossSection) {
   if (csvPath.empty()) return;
-  csv_.open(csvPath);
-  if (!csv_) throw InputError(csvPath, "", "a file that cannot be written", "a writable path (tensile.csv)");
+  csv_ = std::make_unique<AppendFile>(csvPath, resumeAt);
   // The header follows at the first sample, when the ledger's entries are known.
 }
 
@@ -114,18 +114,19 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
     s.contacts = c.inContact, s.aligned = c.aligned;
   }
   samples_.push_back(s);
-  if (csv_.is_open()) {
-    if (columns_.empty()) {
-      columns_ = energyColumns(s.energies);
-      csv_ << "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ";
-      for (const std::string& c : columns_) csv_ << "," << (c.empty() ? "total" : c) << "_zJ";
-      csv_ << ",contact_pairs,aligned_pairs\n";
+  if (csv_) {
+    if (columns_.empty()) columns_ = energyColumns(s.energies);
+    std::string row;
+    if (csv_->bytes() == 0) {
+      row = "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ";
+      for (const std::string& c : columns_) row += "," + (c.empty() ? std::string("total") : c) + "_zJ";
+      row += ",contact_pairs,aligned_pairs\n";
     }
-    csv_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", s.time, s.strain, s.stress, s.forceLeft,
-                        s.forceRight, s.gripWork);
-    for (const std::string& c : columns_) csv_ << fmt::format(",{:.10g}", c.empty() ? s.energies.total() : s.energies[c]);
-    csv_ << fmt::format(",{},{}\n", s.contacts, s.aligned);
-    csv_.flush();
+    row += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", s.time, s.strain, s.stress, s.forceLeft,
+                       s.forceRight, s.gripWork);
+    for (const std::string& c : columns_) row += fmt::format(",{:.10g}", c.empty() ? s.energies.total() : s.energies[c]);
+    row += fmt::format(",{},{}\n", s.contacts, s.aligned);
+    csv_->write(row);
   }
   return samples_.back();
 }
@@ -171,6 +172,45 @@ void TensileRecorder::writePlot(const std::string& path) const {
   plot::Image image = plot::aboveEachOther(fs.render(width, height, path), fe.render(width, height, path));
   image = plot::aboveEachOther(image, fc.render(width, height, path));
   plot::writePng(path, image);
+}
+
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+
+void TensileRecorder::saveState(BinaryWriter& out) const {
+  out.write(lastPower_);
+  out.write<std::uint64_t>(samples_.size());
+  for (const TensileSample& s : samples_) {
+    for (double v : {s.time, s.strain, s.stress, s.forceLeft, s.forceRight, s.gripWork}) out.write(v);
+    out.write<std::int32_t>(s.contacts), out.write<std::int32_t>(s.aligned);
+    out.write<std::uint64_t>(s.energies.entries().size());
+    for (const LedgerEntry& e : s.energies.entries()) {
+      out.write(e.name);
+      out.write<std::int32_t>(static_cast<std::int32_t>(e.kind));
+      out.write(e.value);
+    }
+  }
+}
+
+void TensileRecorder::loadState(BinaryReader& in) {
+  lastPower_ = in.read<double>();
+  const std::uint64_t n = in.read<std::uint64_t>();
+  samples_.clear();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    TensileSample s;
+    for (double* v : {&s.time, &s.strain, &s.stress, &s.forceLeft, &s.forceRight, &s.gripWork}) *v = in.read<double>();
+    s.contacts = in.read<std::int32_t>(), s.aligned = in.read<std::int32_t>();
+    const std::uint64_t entries = in.read<std::uint64_t>();
+    for (std::uint64_t e = 0; e < entries; ++e) {
+      const std::string name = in.read<std::string>();
+      const int kind = in.read<std::int32_t>();
+      if (kind < 0 || kind > 2) in.fail("an energy entry of unknown kind");
+      s.energies.add(name, static_cast<EnergyKind>(kind), in.read<double>());
+    }
+    samples_.push_back(std::move(s));
+  }
+  if (!samples_.empty()) columns_ = energyColumns(samples_.front().energies);
 }
 
 }  // namespace mesochain::mdem

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "mdem/append_file.hpp"
+#include "mdem/binary_io.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 
@@ -45,18 +47,23 @@ struct TensileSample {
 
 class TensileRecorder {
  public:
-  // Opens the CSV (path) when not empty.
-  TensileRecorder(const Scene& scene, const std::string& csvPath);
+  // Opens the CSV (path) when not empty; resumeAt >= 0 appends to an interrupted run's CSV cut
+  // back to that length (the samples before it come from the checkpoint, loadState).
+  TensileRecorder(const Scene& scene, const std::string& csvPath, std::int64_t resumeAt = -1);
   // Samples the current state of `sim` (call at increasing times).
   const TensileSample& record(const Simulation& sim);
   const std::vector<TensileSample>& samples() const { return samples_; }
   // PNG: stress-strain, energies against strain, contact and aligned pair counts.
   void writePlot(const std::string& path) const;
+  // Checkpoints: the samples so far and the integration state of the grip work.
+  void saveState(BinaryWriter& out) const;
+  void loadState(BinaryReader& in);
+  std::int64_t csvBytes() const { return csv_ ? csv_->bytes() : -1; }
 
  private:
   const Scene& scene_;
   double area_ = 0.0;
-  std::ofstream csv_;
+  std::unique_ptr<AppendFile> csv_;
   std::vector<std::string> columns_;  // energy columns (output.hpp, energyColumns), from the first sample
   std::vector<TensileSample> samples_;
   double lastPower_ = 0.0;

@@ -84,3 +84,27 @@ void TimeSeriesPlot::write(const std::string& path) const {
 }
 
 }  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+
+void TimeSeriesPlot::saveState(BinaryWriter& out) const {
+  out.writeVector(columns_);
+  out.writeVector(time_);
+  out.write<std::uint64_t>(energies_.size());
+  for (const auto& v : energies_) out.writeVector(v);
+  out.write<std::uint64_t>(probe_.size());
+  for (const auto& v : probe_) out.writeVector(v);
+}
+
+void TimeSeriesPlot::loadState(BinaryReader& in) {
+  columns_ = in.readVector<std::string>("plot columns");
+  time_ = in.readVector<double>("plot times");
+  energies_.resize(in.read<std::uint64_t>());
+  if (energies_.size() != columns_.size()) in.fail("plot series that do not match their columns");
+  for (auto& v : energies_) v = in.readVector<double>("plot energies");
+  in.expectCount("plot probes", 6 * probes_.size());
+  probe_.resize(6 * probes_.size());
+  for (auto& v : probe_) v = in.readVector<double>("plot probes");
+}
+
+}  // namespace mesochain::mdem

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mdem/binary_io.hpp"
 #include "mdem/body.hpp"
 #include "mdem/effect.hpp"
 
@@ -21,6 +22,9 @@ class TimeSeriesPlot {
   // Energy series that stay exactly zero are left out and named in the panel title; non-finite
   // samples (a run that blew up) are skipped and counted in the legend.
   void write(const std::string& path) const;
+  // Checkpoints: every sample so far.
+  void saveState(BinaryWriter& out) const;
+  void loadState(BinaryReader& in);
 
  private:
   std::vector<int> probes_;

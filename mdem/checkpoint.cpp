@@ -1,0 +1,147 @@
+#include "mdem/checkpoint.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/errors.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+constexpr char kMagic[8] = {'M', 'D', 'E', 'M', 'C', 'K', 'P', 'T'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kByteOrder = 0x01020304;
+
+template <class T>
+void hashValue(std::uint64_t& h, const T& v) {
+  h = fnv1a(&v, sizeof(T), h);
+}
+
+void writeBodies(BinaryWriter& out, const Bodies& b) {
+  out.writeVector(b.position);
+  out.writeVector(b.orientation);
+  out.writeVector(b.velocity);
+  out.writeVector(b.angularMomentumBody);
+  out.writeVector(b.force);
+  out.writeVector(b.torque);
+  out.writeVector(b.initialPosition);
+  out.writeVector(b.accumulatedRotation);
+}
+
+template <class T>
+void readInto(BinaryReader& in, std::vector<T>& into, const char* what) {
+  std::vector<T> v = in.readVector<T>(what);
+  if (v.size() != into.size())
+    in.fail(fmt::format("{} of {} elements for a scene of {}", what, v.size(), into.size()));
+  into = std::move(v);
+}
+
+void readBodies(BinaryReader& in, Bodies& b) {
+  readInto(in, b.position, "positions");
+  readInto(in, b.orientation, "orientations");
+  readInto(in, b.velocity, "velocities");
+  readInto(in, b.angularMomentumBody, "angular momenta");
+  readInto(in, b.force, "forces");
+  readInto(in, b.torque, "torques");
+  readInto(in, b.initialPosition, "initial positions");
+  readInto(in, b.accumulatedRotation, "accumulated rotations");
+}
+}  // namespace
+
+std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed) {
+  std::uint64_t h = seed == 0 ? 14695981039346656037ull : seed;
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t k = 0; k < size; ++k) h = (h ^ p[k]) * 1099511628211ull;
+  return h;
+}
+
+std::uint64_t sceneFingerprint(const Scene& s, double timeStep) {
+  std::uint64_t h = fnv1a(&s.inputHash, sizeof(s.inputHash));
+  hashValue(h, timeStep);
+  for (const ElementType& t : s.elementTypes)
+    for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
+  const Bodies& b = s.bodies;
+  for (int i = 0; i < b.size(); ++i) {
+    hashValue(h, b.type[i]);
+    for (int k = 0; k < 3; ++k) hashValue(h, b.position[i][k]);
+    for (double v : {b.orientation[i].w, b.orientation[i].x, b.orientation[i].y, b.orientation[i].z}) hashValue(h, v);
+  }
+  for (const Bond& bd : s.bonds) hashValue(h, bd.a), hashValue(h, bd.b), hashValue(h, bd.k.kn), hashValue(h, bd.k.ks);
+  for (const std::string& e : s.effects) h = fnv1a(e.data(), e.size(), h);
+  return h;
+}
+
+void writeCheckpoint(const std::string& path, const Scene& scene, const Simulation& sim,
+                     const std::function<void(BinaryWriter&)>& extra) {
+  BinaryWriter out;
+  for (char c : kMagic) out.write(c);
+  out.write(kVersion);
+  out.write(kByteOrder);
+  out.write(sceneFingerprint(scene, sim.timeStep()));
+  out.write<std::int64_t>(sim.stepCount());
+  out.write(sim.time());
+  writeBodies(out, sim.bodies());
+  out.write<std::uint64_t>(sim.effects().size());
+  for (const EffectPtr& e : sim.effects()) {
+    out.write(e->name());
+    BinaryWriter block;
+    e->saveState(block);
+    out.writeVector(block.bytes());
+  }
+  BinaryWriter tail;
+  if (extra) extra(tail);
+  out.writeVector(tail.bytes());
+  const std::uint64_t sum = fnv1a(out.bytes().data(), out.bytes().size());
+  out.write(sum);
+  AtomicOutputFile file(path);
+  file.stream().write(reinterpret_cast<const char*>(out.bytes().data()), static_cast<std::streamsize>(out.bytes().size()));
+  file.commit();
+}
+
+void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim,
+                    const std::function<void(BinaryReader&)>& extra) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path, "", "no checkpoint file", "the checkpoint of the interrupted run (resume)");
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (bytes.size() < sizeof(kMagic) + 8 || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
+    throw InputError(path, "checkpoint", "a file that is not an mDEM checkpoint", "a checkpoint written by mesochain dem");
+  std::uint64_t stored;
+  std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
+  if (fnv1a(bytes.data(), bytes.size() - 8) != stored)
+    throw InputError(path, "checkpoint", "a checksum that does not match (the file is corrupt or truncated)",
+                     "an intact checkpoint");
+  BinaryReader in(bytes.data() + sizeof(kMagic), bytes.size() - sizeof(kMagic) - 8, path);
+  if (const auto v = in.read<std::uint32_t>(); v != kVersion)
+    throw InputError(path, "checkpoint", fmt::format("format version {}", v), fmt::format("version {}", kVersion));
+  if (in.read<std::uint32_t>() != kByteOrder)
+    throw InputError(path, "checkpoint", "another byte order", "a checkpoint written on a machine of this byte order");
+  if (in.read<std::uint64_t>() != sceneFingerprint(scene, sim.timeStep()))
+    throw InputError(path, "checkpoint",
+                     "a checkpoint of another scene (the scene or model file, its elements, bonds, effects or time "
+                     "step changed since it was written)",
+                     "the unchanged scene of the interrupted run, or a fresh run without --resume");
+  const std::int64_t step = in.read<std::int64_t>();
+  const double time = in.read<double>();
+  State& state = sim.state();
+  readBodies(in, state.bodies);
+  state.time = time;
+  sim.setStepCount(step);
+  in.expectCount("effects", sim.effects().size());
+  for (const EffectPtr& e : sim.effects()) {
+    const std::string name = in.read<std::string>();
+    if (name != e->name()) in.fail("effect \"" + name + "\" where the scene has \"" + e->name() + "\"");
+    const std::vector<unsigned char> block = in.readVector<unsigned char>("effect " + name);
+    BinaryReader b(block.data(), block.size(), path);
+    e->loadState(b);
+    if (b.remaining() != 0) b.fail("effect \"" + name + "\" has more state than this version reads");
+  }
+  const std::vector<unsigned char> tail = in.readVector<unsigned char>("run section");
+  BinaryReader t(tail.data(), tail.size(), path);
+  if (extra) extra(t);
+}
+
+}  // namespace mesochain::mdem

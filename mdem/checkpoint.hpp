@@ -1,0 +1,43 @@
+#pragma once
+// Checkpoints of an mDEM run (`mesochain dem SCENE --resume`, docs/scene-file.md, restart):
+// everything that determines the future, so that a resumed run continues bit for bit as the
+// uninterrupted one would have:
+//   the step count and time; every element's position, orientation, velocity, angular momentum,
+//   force and torque (of the current state: the next half kick uses them), initial position and
+//   accumulated rotation; each effect's evolving state (Effect::saveState: tracked twist
+//   branches, dissipated work, the neighbour list and the positions it was built at); and what
+//   the run loop adds (output file lengths, frame counter, recorded samples).
+// Nothing in a run draws random numbers, so there is no RNG state to keep.
+//
+// Binary file: magic "MDEMCKPT", format version, byte-order mark, the scene's fingerprint, the
+// sections, and an FNV-1a checksum of all bytes before it. Written atomically (temporary file +
+// rename), so a kill while writing leaves the previous checkpoint. A truncated or corrupt file, a
+// checkpoint of another scene (fingerprint: the scene and model file text, the element types,
+// initial elements, bonds, effects and the time step) or of another machine's byte order is an
+// InputError naming the file.
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "mdem/binary_io.hpp"
+#include "mdem/scene.hpp"
+#include "mdem/simulation.hpp"
+
+namespace mesochain::mdem {
+
+// FNV-1a, 64 bit, continuing from `seed` (0: start).
+std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed = 0);
+
+// What identifies a scene's run: the input files' hash plus its initial state and effects.
+std::uint64_t sceneFingerprint(const Scene& scene, double timeStep);
+
+// Writes the simulation's state and `extra` (the run loop's own section) to `path` atomically.
+void writeCheckpoint(const std::string& path, const Scene& scene, const Simulation& sim,
+                     const std::function<void(BinaryWriter&)>& extra);
+
+// Restores `sim` (built from the same scene) from `path`, then hands the run loop's section to
+// `extra`. Throws InputError naming the file when it is missing, corrupt or of another scene.
+void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim,
+                    const std::function<void(BinaryReader&)>& extra);
+
+}  // namespace mesochain::mdem

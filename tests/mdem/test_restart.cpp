@@ -1,0 +1,219 @@
+// Restart (checkpoint.hpp, run.hpp): a run interrupted at random steps and resumed from its last
+// checkpoint ends in exactly the state of the uninterrupted run, on 1 and 2 threads, with every
+// output file (energies and tensile CSVs, XYZ trajectory, VTK frames) byte-identical to the
+// uninterrupted run's; corrupt, truncated or foreign checkpoints are clear errors; a fresh run
+// into a folder with an interrupted run is refused.
+#include <omp.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "mdem/run.hpp"
+#include "mdem/scene_file.hpp"
+
+namespace mesochain::mdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small tensile test of a random film (520 elements: above the stepper's one-thread threshold)
+// with every effect and output that carries state:
+// bonds (twist branches), vdW contacts and dashpots (neighbour list, dissipated work), local
+// damping, grips (grip work), the CSVs, XYZ, VTK frames and the plot.
+std::string sceneText(long steps, long checkpointEvery) {
+  return fmt::format(R"(format = 1
+effects = ["bonds", "vdw_contact", "contact_damping", "local_damping"]
+[[element_types]]
+name = "cnt1010"
+shape = "cylinder"
+radius_nm = 0.678
+length_nm = 2.0
+mass_ag = 0.00648
+[[bond_types]]
+name = "cnt"
+young_modulus_MPa = 1.0e6
+shear_modulus_MPa = 0.4e6
+[network]
+element_type = "cnt1010"
+bond_type = "cnt"
+size_nm = [70.0, 70.0, 6.0]
+tube_length_nm = 20.0
+tubes = 52
+shape = "wavy"
+waviness_deg = 8.0
+seed = 3
+[vdw_contact]
+epsilon_meV = 2.84
+sigma_nm = 0.34
+surface_density_per_nm2 = 38.2
+[contact_damping]
+translational_pN_ns_per_nm2 = 1.0
+rotational_pN_ns = 0.1
+[local_damping]
+alpha = 0.3
+[run]
+time_step_fraction = 0.7
+steps = {}
+[output]
+energies_csv = "energies.csv"
+energies_every = 20
+plot_png = "energies.png"
+xyz = "trajectory.xyz"
+vtk_prefix = "frames/f"
+frames_every = 25
+checkpoint_every = {}
+checkpoint_minutes = 0
+[tensile]
+grip_width_nm = 3.0
+strain_rate_per_ns = 0.5
+ramp_ns = 0.01
+csv = "tensile.csv"
+)",
+                     steps, checkpointEvery);
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class Restart : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / fmt::format("mesochain-restart-{}", ::testing::UnitTest::GetInstance()->random_seed());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    scenePath_ = (dir_ / "scene.toml").string();
+    std::ofstream(scenePath_) << sceneText(kSteps, kEvery);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  RunSummary run(const std::string& out, const RunOptions& o = {}) {
+    return runScene(loadScene(scenePath_), (dir_ / out).string(), nullptr, o);
+  }
+  // The outputs a reader compares (the plot is a picture of the same samples).
+  void expectSameOutputs(const std::string& a, const std::string& b) {
+    for (const char* f : {"energies.csv", "tensile.csv", "trajectory.xyz", "frames/f_000000.vtk", "frames/f_000004.vtk"})
+      EXPECT_EQ(slurp(dir_ / a / f), slurp(dir_ / b / f)) << f;
+    std::size_t framesA = 0, framesB = 0;
+    for (const auto& e : fs::directory_iterator(dir_ / a / "frames")) framesA += e.is_regular_file();
+    for (const auto& e : fs::directory_iterator(dir_ / b / "frames")) framesB += e.is_regular_file();
+    EXPECT_EQ(framesA, framesB);
+  }
+
+  static constexpr long kSteps = 200, kEvery = 20;
+  fs::path dir_;
+  std::string scenePath_;
+};
+
+TEST_F(Restart, InterruptedRunsResumeBitForBitOnOneAndTwoThreads) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const RunSummary reference = run("reference");
+  ASSERT_FALSE(reference.interrupted);
+  EXPECT_FALSE(fs::exists(dir_ / "reference" / "checkpoint.mdem"));  // a finished run keeps none
+  std::mt19937 gen(12345);
+  std::uniform_int_distribution<long> at(1, kSteps - 1);
+  for (int trial = 0; trial < 10; ++trial) {
+    const int threads = 1 + trial % 2;
+    omp_set_num_threads(threads);
+    const std::string out = fmt::format("trial{}", trial);
+    // Kill at one or two random steps, resuming after each (a second kill may land before the
+    // next checkpoint: the resume then starts from the same one again).
+    RunOptions kill;
+    kill.interruptAfter = at(gen);
+    const RunSummary first = run(out, kill);
+    ASSERT_TRUE(first.interrupted);
+    RunOptions resume;
+    resume.resume = true;
+    if (kill.interruptAfter < kEvery) {  // no checkpoint yet: nothing to resume
+      EXPECT_THROW(run(out, resume), InputError);
+      RunOptions again;
+      again.overwrite = true;
+      run(out, again);
+    } else {
+      if (trial % 3 == 0) {
+        resume.interruptAfter = std::min(kSteps - 1, kill.interruptAfter + at(gen) / 4 + 1);
+        const RunSummary second = run(out, resume);
+        ASSERT_TRUE(second.interrupted);
+        resume.interruptAfter = -1;
+      }
+      const RunSummary last = run(out, resume);
+      EXPECT_GE(last.resumedFromStep, kEvery);
+      EXPECT_EQ(last.resumedFromStep % kEvery, 0);
+      EXPECT_EQ(last.steps, reference.steps);
+      EXPECT_EQ(last.time, reference.time);
+      EXPECT_EQ(last.finalEnergies.total(), reference.finalEnergies.total()) << "trial " << trial;
+      EXPECT_EQ(last.finalEnergies["contact_dissipated"], reference.finalEnergies["contact_dissipated"]);
+      EXPECT_EQ(last.finalStress, reference.finalStress);
+      EXPECT_EQ(last.peakStress, reference.peakStress);
+    }
+    expectSameOutputs("reference", out);
+  }
+  omp_set_num_threads(saved);
+}
+
+TEST_F(Restart, BadCheckpointsAreClearErrors) {
+  RunOptions kill;
+  kill.interruptAfter = 2 * kEvery + 5;
+  run("out", kill);
+  const fs::path ck = dir_ / "out" / "checkpoint.mdem";
+  ASSERT_TRUE(fs::exists(ck));
+  const std::string good = slurp(ck);
+  RunOptions resume;
+  resume.resume = true;
+  auto expectError = [&](const std::string& content, const char* words) {
+    std::ofstream(ck, std::ios::binary | std::ios::trunc) << content;
+    try {
+      run("out", resume);
+      ADD_FAILURE() << "no error for " << words;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(ck.filename().string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  expectError(good.substr(0, good.size() / 2), "checksum");             // truncated
+  std::string flipped = good;
+  flipped[flipped.size() / 3] ^= 0x10;
+  expectError(flipped, "checksum");                                    // corrupt
+  expectError("not a checkpoint at all", "not an mDEM checkpoint");    // foreign file
+  // The scene changed since the checkpoint (another seed: another film).
+  std::ofstream(ck, std::ios::binary | std::ios::trunc) << good;
+  std::string text = sceneText(kSteps, kEvery);
+  text.replace(text.find("seed = 3"), 8, "seed = 4");
+  std::ofstream(scenePath_) << text;
+  expectError(good, "another scene");
+}
+
+TEST_F(Restart, FreshRunIntoAnInterruptedRunsFolderIsRefused) {
+  RunOptions kill;
+  kill.interruptAfter = kEvery + 1;
+  run("out", kill);
+  try {
+    run("out");
+    FAIL() << "a fresh run replaced an interrupted one";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--resume"), std::string::npos) << e.what();
+  }
+  RunOptions overwrite;
+  overwrite.overwrite = true;
+  const RunSummary r = run("out", overwrite);
+  EXPECT_FALSE(r.removedStale.empty());
+  expectSameOutputs("out", "out");
+  // Stale frames of a longer earlier run are removed by a shorter rerun.
+  std::ofstream(scenePath_) << sceneText(60, kEvery);
+  const RunSummary shorter = run("out");
+  EXPECT_FALSE(shorter.removedStale.empty());
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "frames" / "f_000004.vtk"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "frames" / "f_000002.vtk"));
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
