@@ -77,11 +77,17 @@ Command makeDemCommand() {
     }
     std::cout << fmt::format("energies (zJ): {}, total {:.8g}{}; outputs in {}\n", stored, e.total(),
                              dissipated.empty() ? "" : " (dissipated: " + dissipated + ")", dir);
-    if (r.tensile)
-      std::cout << fmt::format("tensile: strain {:.6g}, stress {:.6g} MPa (peak {:.6g} MPa, at zero strain {:.6g} MPa), "
-                               "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
-                               r.finalStrain, r.finalStress, r.peakStress, r.initialStress, scene.tensile.crossSection,
-                               scene.tensile.gaugeLength, (std::filesystem::path(dir) / scene.tensile.csv).string());
+    for (const mdem::StageSummary& st : r.stages) {
+      if (!st.name.empty())
+        std::cout << fmt::format("stage {}: {} steps, {:.6g} ns{}{}\n", st.name, st.steps, st.time,
+                                 st.stoppedByCriterion ? ", stopped: kinetic energy below threshold" : "",
+                                 st.reachedFinalStrain ? ", final strain reached" : "");
+      if (st.tensile)
+        std::cout << fmt::format("tensile: strain {:.6g}, stress {:.6g} MPa (peak {:.6g} MPa, at zero strain {:.6g} MPa), "
+                                 "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
+                                 st.finalStrain, st.finalStress, st.peakStress, st.initialStress, st.crossSection,
+                                 st.gaugeLength, st.tensileCsv);
+    }
     if (!scene.output.plotPng.empty())
       std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";
     return 0;

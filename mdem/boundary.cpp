@@ -16,7 +16,8 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     [](EffectBuild& b) -> EffectPtr { return std::make_unique<LoadEffect>(b.scene.boundary.loads, b.scene.bodies); }})
 
 namespace {
-double rampFactor(double t, double ramp) { return ramp > 0.0 ? std::min(1.0, t / ramp) : 1.0; }
+// 0 before the start (t < 0), then linear over `ramp`, then 1.
+double rampFactor(double t, double ramp) { return ramp > 0.0 ? std::clamp(t / ramp, 0.0, 1.0) : (t < 0.0 ? 0.0 : 1.0); }
 // (1 - cos(2 pi t / T)) / T on [0, T], 0 after: integrates to 1 over [0, T].
 double smoothProfile(double t, double duration) {
   if (t < 0.0 || t >= duration) return 0.0;
@@ -55,7 +56,7 @@ void KinematicMap::applyElement(Bodies& s, int i, double t) const {
   const FixedDofs* f = fixed[i];
   if (!f) return;
   for (int d = 0; d < 3; ++d)
-    if (f->fixed[d]) s.velocity[i][d] = f->velocity[d] * rampFactor(t, f->ramp);
+    if (f->fixed[d]) s.velocity[i][d] = f->velocity[d] * rampFactor(t - f->start, f->ramp);
   if (f->allRotationsFixed()) {
     s.angularMomentumBody[i].setZero();
   } else if (f->fixed[3] || f->fixed[4] || f->fixed[5]) {

@@ -12,12 +12,14 @@ namespace mesochain::mdem {
 
 // DOF order: x, y, z (translation), rx, ry, rz (rotation about the world axes).
 // Fixed translations may move at a prescribed velocity (the grips of a tensile test):
-// v_d(t) = velocity_d * min(1, t / ramp) on each fixed translation d (0 by default: held).
+// v_d(t) = velocity_d * min(1, (t - start) / ramp) on each fixed translation d (0 by default:
+// held; start is the time the stage that set the grips began).
 struct FixedDofs {
   int element = -1;
   std::array<bool, 6> fixed{};
   Vec3 velocity = Vec3::Zero();  // nm/ns
   double ramp = 0.0;             // ns
+  double start = 0.0;            // ns: the ramp starts here (the grips of a later stage)
   bool allRotationsFixed() const { return fixed[3] && fixed[4] && fixed[5]; }
 };
 

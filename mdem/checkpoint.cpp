@@ -59,9 +59,9 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed) {
   return h;
 }
 
-std::uint64_t sceneFingerprint(const Scene& s, double timeStep) {
+std::uint64_t sceneFingerprint(const Scene& s) {
   std::uint64_t h = fnv1a(&s.inputHash, sizeof(s.inputHash));
-  hashValue(h, timeStep);
+  hashValue(h, s.run.timeStep), hashValue(h, s.run.timeStepFraction);
   for (const ElementType& t : s.elementTypes)
     for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
   const Bodies& b = s.bodies;
@@ -72,29 +72,37 @@ std::uint64_t sceneFingerprint(const Scene& s, double timeStep) {
   }
   for (const Bond& bd : s.bonds) hashValue(h, bd.a), hashValue(h, bd.b), hashValue(h, bd.k.kn), hashValue(h, bd.k.ks);
   for (const std::string& e : s.effects) h = fnv1a(e.data(), e.size(), h);
+  hashValue(h, s.stages.size());
   return h;
 }
 
 void writeCheckpoint(const std::string& path, const Scene& scene, const Simulation& sim,
-                     const std::function<void(BinaryWriter&)>& extra) {
+                     const std::function<void(BinaryWriter&)>& prelude,
+                     const std::function<void(BinaryWriter&)>& tail) {
   BinaryWriter out;
   for (char c : kMagic) out.write(c);
   out.write(kVersion);
   out.write(kByteOrder);
-  out.write(sceneFingerprint(scene, sim.timeStep()));
-  out.write<std::int64_t>(sim.stepCount());
-  out.write(sim.time());
-  writeBodies(out, sim.bodies());
-  out.write<std::uint64_t>(sim.effects().size());
+  out.write(sceneFingerprint(scene));
+  BinaryWriter first;
+  if (prelude) prelude(first);
+  out.writeVector(first.bytes());
+  BinaryWriter state;
+  state.write<std::int64_t>(sim.stepCount());
+  state.write(sim.time());
+  state.write(sim.timeStep());
+  writeBodies(state, sim.bodies());
+  state.write<std::uint64_t>(sim.effects().size());
   for (const EffectPtr& e : sim.effects()) {
-    out.write(e->name());
+    state.write(e->name());
     BinaryWriter block;
     e->saveState(block);
-    out.writeVector(block.bytes());
+    state.writeVector(block.bytes());
   }
-  BinaryWriter tail;
-  if (extra) extra(tail);
-  out.writeVector(tail.bytes());
+  out.writeVector(state.bytes());
+  BinaryWriter last;
+  if (tail) tail(last);
+  out.writeVector(last.bytes());
   const std::uint64_t sum = fnv1a(out.bytes().data(), out.bytes().size());
   out.write(sum);
   AtomicOutputFile file(path);
@@ -102,8 +110,7 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
   file.commit();
 }
 
-void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim,
-                    const std::function<void(BinaryReader&)>& extra) {
+CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : path_(path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path, "", "no checkpoint file", "the checkpoint of the interrupted run (resume)");
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -119,13 +126,21 @@ void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim
     throw InputError(path, "checkpoint", fmt::format("format version {}", v), fmt::format("version {}", kVersion));
   if (in.read<std::uint32_t>() != kByteOrder)
     throw InputError(path, "checkpoint", "another byte order", "a checkpoint written on a machine of this byte order");
-  if (in.read<std::uint64_t>() != sceneFingerprint(scene, sim.timeStep()))
+  if (in.read<std::uint64_t>() != sceneFingerprint(scene))
     throw InputError(path, "checkpoint",
                      "a checkpoint of another scene (the scene or model file, its elements, bonds, effects or time "
                      "step changed since it was written)",
                      "the unchanged scene of the interrupted run, or a fresh run without --resume");
+  prelude_ = in.readVector<unsigned char>("prelude");
+  state_ = in.readVector<unsigned char>("state");
+  tail_ = in.readVector<unsigned char>("run section");
+}
+
+void CheckpointFile::restore(Simulation& sim) const {
+  BinaryReader in = section(state_);
   const std::int64_t step = in.read<std::int64_t>();
   const double time = in.read<double>();
+  if (in.read<double>() != sim.timeStep()) in.fail("a time step other than the rebuilt simulation's");
   State& state = sim.state();
   readBodies(in, state.bodies);
   state.time = time;
@@ -135,13 +150,13 @@ void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim
     const std::string name = in.read<std::string>();
     if (name != e->name()) in.fail("effect \"" + name + "\" where the scene has \"" + e->name() + "\"");
     const std::vector<unsigned char> block = in.readVector<unsigned char>("effect " + name);
-    BinaryReader b(block.data(), block.size(), path);
+    BinaryReader b(block.data(), block.size(), path_);
     e->loadState(b);
     if (b.remaining() != 0) b.fail("effect \"" + name + "\" has more state than this version reads");
   }
-  const std::vector<unsigned char> tail = in.readVector<unsigned char>("run section");
-  BinaryReader t(tail.data(), tail.size(), path);
-  if (extra) extra(t);
 }
+
+void writeBodiesTo(BinaryWriter& out, const Bodies& b) { writeBodies(out, b); }
+void readBodiesFrom(BinaryReader& in, Bodies& b) { readBodies(in, b); }
 
 }  // namespace mesochain::mdem

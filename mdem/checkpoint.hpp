@@ -29,15 +29,37 @@ namespace mesochain::mdem {
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed = 0);
 
 // What identifies a scene's run: the input files' hash plus its initial state and effects.
-std::uint64_t sceneFingerprint(const Scene& scene, double timeStep);
+std::uint64_t sceneFingerprint(const Scene& scene);
 
-// Writes the simulation's state and `extra` (the run loop's own section) to `path` atomically.
+// Writes the simulation's state to `path` atomically, with the run loop's two sections:
+// `prelude` (what the loop needs to rebuild the simulation: e.g. the stage and its starting
+// state) and `tail` (its outputs' state). `scene` is the scene file's scene (the fingerprint).
 void writeCheckpoint(const std::string& path, const Scene& scene, const Simulation& sim,
-                     const std::function<void(BinaryWriter&)>& extra);
+                     const std::function<void(BinaryWriter&)>& prelude,
+                     const std::function<void(BinaryWriter&)>& tail);
 
-// Restores `sim` (built from the same scene) from `path`, then hands the run loop's section to
-// `extra`. Throws InputError naming the file when it is missing, corrupt or of another scene.
-void readCheckpoint(const std::string& path, const Scene& scene, Simulation& sim,
-                    const std::function<void(BinaryReader&)>& extra);
+// A checkpoint read and checked (magic, checksum, version, byte order, fingerprint of `scene`):
+// the prelude first, then restore() into a simulation rebuilt from it, then the tail.
+class CheckpointFile {
+ public:
+  CheckpointFile(const std::string& path, const Scene& scene);
+  BinaryReader prelude() const { return section(prelude_); }
+  // Step, time, every element's state and each effect's; the simulation's time step must be
+  // the checkpoint's.
+  void restore(Simulation& sim) const;
+  BinaryReader tail() const { return section(tail_); }
+
+ private:
+  BinaryReader section(const std::vector<unsigned char>& bytes) const {
+    return BinaryReader(bytes.data(), bytes.size(), path_);
+  }
+  std::string path_;
+  std::vector<unsigned char> prelude_, state_, tail_;
+};
+
+// Every per-element array of `b` (not types, masses, inertia: those come from the scene).
+void writeBodiesTo(BinaryWriter& out, const Bodies& b);
+// Reads them into `b`, which must have as many elements.
+void readBodiesFrom(BinaryReader& in, Bodies& b);
 
 }  // namespace mesochain::mdem

@@ -22,6 +22,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 // VTK frames PREFIX_NNNNNN.vtk of `prefix` (a path), with their frame numbers.
 std::vector<std::pair<long, fs::path>> vtkFrames(const std::string& prefix) {
   std::vector<std::pair<long, fs::path>> out;
@@ -39,17 +41,145 @@ std::vector<std::pair<long, fs::path>> vtkFrames(const std::string& prefix) {
   return out;
 }
 
-// The run loop's own checkpoint section.
-struct LoopState {
-  std::int64_t energiesBytes = -1, tensileBytes = -1, xyzBytes = -1;
-  std::int64_t frame = 0;
+// The stages of a scene: its [[stages]], or one made of [run], [output] and [tensile].
+std::vector<StageSpec> stagesOf(const Scene& s) {
+  if (!s.stages.empty()) return s.stages;
+  StageSpec st;
+  st.steps = s.run.steps, st.stopKineticEnergy = s.run.stopKineticEnergy;
+  st.checkEvery = s.run.checkEvery, st.minimumSteps = s.run.minimumSteps;
+  st.energiesCsv = s.output.energiesCsv, st.energiesEvery = s.output.energiesEvery, st.plotPng = s.output.plotPng;
+  st.tensileStage = s.tensile.enabled;
+  st.tensile = s.tensile;  // grips already chosen by loadScene
+  return {st};
+}
+
+// The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
+// extra effects and, for a tensile stage, its grips chosen from those positions.
+Scene stageScene(const Scene& base, const StageSpec& stage, const Bodies& bodies, double time, bool implicit) {
+  Scene s = base;
+  s.bodies = bodies;
+  s.effects.insert(s.effects.end(), stage.addEffects.begin(), stage.addEffects.end());
+  if (!implicit) {
+    s.tensile = stage.tensile;
+    if (s.tensile.enabled) {
+      s.tensile.startTime = time;
+      setUpTensile(s);
+    }
+  }
+  return s;
+}
+
+// Copies the evolving state of every effect of `from` into the effect of the same name of `to`
+// (tracked twist branches, dissipated work, neighbour lists), as a checkpoint would.
+void carryEffectStates(const Simulation& from, Simulation& to) {
+  for (const EffectPtr& e : to.effects())
+    if (const Effect* old = from.effect(e->name())) {
+      BinaryWriter out;
+      old->saveState(out);
+      BinaryReader in(out.bytes().data(), out.bytes().size(), "<stage transition>");
+      e->loadState(in);
+    }
+}
+
+// One stage's run: its simulation and outputs.
+class StageRun {
+ public:
+  StageRun(const Scene& base, const StageSpec& spec, Scene scene, const fs::path& dir, std::int64_t stageIndex,
+           double startTime, long startStep, const Bodies& startBodies)
+      : base_(base), spec_(spec), scene_(std::move(scene)), dir_(dir), index_(stageIndex), startBodies_(startBodies),
+        sim_(scene_, startTime, startStep) {}
+
+  Simulation& sim() { return sim_; }
+  const Scene& scene() const { return scene_; }
+  const StageSpec& spec() const { return spec_; }
+
+  std::string prepare(const std::string& name) const {
+    const fs::path p = dir_ / name;
+    std::error_code ec;
+    if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+    return p.string();
+  }
+
+  // Opens the stage's outputs (new, or cut back to `resume`'s lengths).
+  void open(BinaryReader* resume) {
+    std::int64_t energies = -1, tensile = -1;
+    if (resume) energies = resume->read<std::int64_t>(), tensile = resume->read<std::int64_t>();
+    if (!spec_.plotPng.empty()) plot_ = std::make_unique<TimeSeriesPlot>(base_.output.probes);
+    if (resume) {
+      if (resume->read<char>() != (plot_ ? 1 : 0)) resume->fail("a plot section that does not match the stage's plot_png");
+      if (plot_) plot_->loadState(*resume);
+    }
+    if (!spec_.energiesCsv.empty())
+      csv_ = std::make_unique<EnergyCsvWriter>(prepare(spec_.energiesCsv), sim_.energies(), base_.output.probes, energies);
+    plotEvery_ = std::max(spec_.energiesEvery, spec_.steps / 4000);
+    if (scene_.tensile.enabled) {
+      tensile_ = std::make_unique<TensileRecorder>(scene_, prepare(scene_.tensile.csv), tensile);
+      if (resume) tensile_->loadState(*resume);
+    }
+  }
+  void saveOutputs(BinaryWriter& out) const {
+    out.write<std::int64_t>(csv_ ? csv_->bytes() : -1);
+    out.write<std::int64_t>(tensile_ ? tensile_->csvBytes() : -1);
+    out.write<char>(plot_ ? 1 : 0);
+    if (plot_) plot_->saveState(out);
+    if (tensile_) tensile_->saveState(out);
+  }
+  void savePrelude(BinaryWriter& out) const {
+    out.write(index_);
+    out.write(startTime());
+    out.write<std::int64_t>(startStep());
+    writeBodiesTo(out, startBodies_);
+  }
+  double startTime() const { return startTime_; }
+  long startStep() const { return startStep_; }
+  void setStart(double t, long k) { startTime_ = t, startStep_ = k; }
+
+  // The stage's time series at the current step (every `every` steps, or always when forced).
+  void record(bool force) {
+    const long k = sim_.stepCount() - startStep_;
+    if (csv_ && (force || k % spec_.energiesEvery == 0)) csv_->write(sim_.stepCount(), sim_.time(), sim_.energies(), sim_.bodies());
+    if (plot_ && (force || k % plotEvery_ == 0)) plot_->record(sim_.time(), sim_.energies(), sim_.bodies());
+    if (tensile_ && (force || k % spec_.energiesEvery == 0)) {
+      const TensileSample& t = tensile_->record(sim_);
+      reachedStrain_ = scene_.tensile.finalStrain > 0.0 && t.strain >= scene_.tensile.finalStrain;
+    }
+  }
+  bool recordsEvery() const { return csv_ || tensile_ || plot_; }
+  bool reachedFinalStrain() const { return reachedStrain_; }
+  void finish(StageSummary& out) {
+    if (plot_) plot_->write(prepare(spec_.plotPng));
+    if (tensile_) {
+      if (!scene_.tensile.png.empty()) tensile_->writePlot(prepare(scene_.tensile.png));
+      const TensileSample& last = tensile_->samples().back();
+      out.tensile = true, out.finalStrain = last.strain, out.finalStress = last.stress;
+      for (const TensileSample& t : tensile_->samples()) out.peakStress = std::max(out.peakStress, t.stress);
+      out.initialStress = tensile_->samples().front().stress;
+      out.crossSection = scene_.tensile.crossSection, out.gaugeLength = scene_.tensile.gaugeLength;
+      out.tensileCsv = prepare(scene_.tensile.csv);
+    }
+  }
+
+ private:
+  const Scene& base_;
+  StageSpec spec_;
+  Scene scene_;
+  fs::path dir_;
+  std::int64_t index_;
+  Bodies startBodies_;
+  double startTime_ = 0.0;
+  long startStep_ = 0;
+  Simulation sim_;
+  std::unique_ptr<EnergyCsvWriter> csv_;
+  std::unique_ptr<TimeSeriesPlot> plot_;
+  std::unique_ptr<TensileRecorder> tensile_;
+  long plotEvery_ = 1;
+  bool reachedStrain_ = false;
 };
 
 }  // namespace
 
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                     const std::function<void(double)>& progress, const RunOptions& options) {
-  Simulation sim(scene);
   const OutputSpec& o = scene.output;
   const fs::path dir(outputDirectory);
   std::error_code ec;
@@ -62,27 +192,20 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   };
   const std::string checkpointPath = prepare(o.checkpoint);
   const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
+  const std::vector<StageSpec> stages = stagesOf(scene);
+  const bool implicit = scene.stages.empty();
+  long totalSteps = 0;
+  for (const StageSpec& st : stages) totalSteps += st.steps;
   RunSummary r;
 
   // Resume, or start afresh in a folder without an interrupted run (or with --overwrite).
-  LoopState loop;
-  std::unique_ptr<TimeSeriesPlot> plot;
-  if (!o.plotPng.empty()) plot = std::make_unique<TimeSeriesPlot>(o.probes);
-  std::vector<char> tensileState;
+  std::unique_ptr<CheckpointFile> resumed;
   const bool hasCheckpoint = fs::exists(checkpointPath);
   if (options.resume) {
     if (!hasCheckpoint)
       throw InputError(checkpointPath, "", "no checkpoint (the run finished, or never wrote one)",
                        "the checkpoint of an interrupted run of this scene to resume");
-    readCheckpoint(checkpointPath, scene, sim, [&](BinaryReader& in) {
-      loop.energiesBytes = in.read<std::int64_t>(), loop.tensileBytes = in.read<std::int64_t>();
-      loop.xyzBytes = in.read<std::int64_t>(), loop.frame = in.read<std::int64_t>();
-      if (in.read<char>() != (plot ? 1 : 0)) in.fail("a plot section that does not match the scene's [output]");
-      if (plot) plot->loadState(in);
-      const std::vector<unsigned char> t = in.readVector<unsigned char>("tensile section");
-      tensileState.assign(t.begin(), t.end());
-    });
-    r.resumedFromStep = sim.stepCount();
+    resumed = std::make_unique<CheckpointFile>(checkpointPath, scene);
   } else {
     if (hasCheckpoint && !options.overwrite)
       throw InputError(checkpointPath, "",
@@ -91,114 +214,139 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                        "output folder (-o)");
     if (hasCheckpoint) fs::remove(checkpointPath, ec), r.removedStale.push_back(checkpointPath);
   }
+
+  // Where to start: stage 0 at the scene's state, or the checkpoint's stage.
+  std::int64_t stageIndex = 0;
+  double stageTime = 0.0;
+  long stageStep = 0;
+  Bodies stageBodies = scene.bodies;
+  std::int64_t xyzBytes = -1, frame = 0;
+  if (resumed) {
+    BinaryReader pre = resumed->prelude();
+    stageIndex = pre.read<std::int64_t>(), stageTime = pre.read<double>(), stageStep = pre.read<std::int64_t>();
+    if (stageIndex < 0 || stageIndex >= static_cast<std::int64_t>(stages.size())) pre.fail("a stage the scene does not have");
+    readBodiesFrom(pre, stageBodies);
+  }
+  BinaryReader tail = resumed ? resumed->tail() : BinaryReader(nullptr, 0, checkpointPath);
+  if (resumed) xyzBytes = tail.read<std::int64_t>(), frame = tail.read<std::int64_t>();
   // Frames of an earlier (longer) run, or written after the checkpoint, would mix with this run's.
   if (!vtkPrefix.empty())
     for (const auto& [index, path] : vtkFrames(vtkPrefix))
-      if (index >= loop.frame) fs::remove(path, ec), r.removedStale.push_back(path.string());
-
-  std::unique_ptr<EnergyCsvWriter> csv;
-  if (!o.energiesCsv.empty())
-    csv = std::make_unique<EnergyCsvWriter>(prepare(o.energiesCsv), sim.energies(), o.probes, loop.energiesBytes);
+      if (index >= frame) fs::remove(path, ec), r.removedStale.push_back(path.string());
   std::unique_ptr<AppendFile> xyz;
-  if (!o.xyz.empty()) xyz = std::make_unique<AppendFile>(prepare(o.xyz), loop.xyzBytes);
-  // The plot samples every energies_every steps, coarser when that would exceed ~4000 samples.
-  const long plotEvery = std::max(o.energiesEvery, scene.run.steps / 4000);
-  std::unique_ptr<TensileRecorder> tensile;
-  if (scene.tensile.enabled) {
-    tensile = std::make_unique<TensileRecorder>(scene, prepare(scene.tensile.csv), loop.tensileBytes);
-    if (options.resume) {
-      BinaryReader in(reinterpret_cast<const unsigned char*>(tensileState.data()), tensileState.size(), checkpointPath);
-      tensile->loadState(in);
+  if (!o.xyz.empty()) xyz = std::make_unique<AppendFile>(prepare(o.xyz), xyzBytes);
+  const bool frames = xyz || !vtkPrefix.empty();
+  auto writeFrame = [&](const Simulation& sim, const Scene& s) {
+    if (xyz) {
+      std::ostringstream text;
+      writeXyzFrame(text, sim.bodies(), s.elementTypes, sim.time(), sim.stepCount());
+      xyz->write(text.str());
     }
-  }
-  long frame = loop.frame;
-  auto record = [&](bool force) {
-    const long k = sim.stepCount();
-    if (csv && (force || k % o.energiesEvery == 0)) csv->write(k, sim.time(), sim.energies(), sim.bodies());
-    if (plot && (force || k % plotEvery == 0)) plot->record(sim.time(), sim.energies(), sim.bodies());
-    if (tensile && (force || k % o.energiesEvery == 0)) tensile->record(sim);
-    if (force || k % o.framesEvery == 0) {
-      if (xyz) {
-        std::ostringstream text;
-        writeXyzFrame(text, sim.bodies(), scene.elementTypes, sim.time(), k);
-        xyz->write(text.str());
-      }
-      if (!vtkPrefix.empty())
-        writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time());
-      ++frame;
-    }
-  };
-  using Clock = std::chrono::steady_clock;
-  auto lastCheckpoint = Clock::now();
-  auto checkpoint = [&] {
-    writeCheckpoint(checkpointPath, scene, sim, [&](BinaryWriter& out) {
-      out.write<std::int64_t>(csv ? csv->bytes() : -1);
-      out.write<std::int64_t>(tensile ? tensile->csvBytes() : -1);
-      out.write<std::int64_t>(xyz ? xyz->bytes() : -1);
-      out.write<std::int64_t>(frame);
-      out.write<char>(plot ? 1 : 0);
-      if (plot) plot->saveState(out);
-      BinaryWriter t;
-      if (tensile) tensile->saveState(t);
-      out.writeVector(t.bytes());
-    });
-    lastCheckpoint = Clock::now();
-    ++r.checkpoints;
+    if (!vtkPrefix.empty()) writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time());
+    ++frame;
   };
 
-  r.timeStep = sim.timeStep();
-  r.criticalTimeStep = sim.stability().criticalTimeStep;
-  const EnergyLedger initial = sim.energies();
-  for (const LedgerEntry& e : initial.entries()) r.dissipatedTracked = r.dissipatedTracked || e.kind == EnergyKind::Dissipated;
-  if (!options.resume) record(true);
-  const long every = std::max(1L, scene.run.steps / 200);
-  const bool frames = xyz || !vtkPrefix.empty();
-  const bool stopCheck = scene.run.stopKineticEnergy > 0.0;
+  auto lastCheckpoint = Clock::now();
   const bool byMinutes = o.checkpointMinutes > 0.0;
   auto nextMultiple = [](long k, long n) { return (k / n + 1) * n; };
-  while (sim.stepCount() < scene.run.steps) {
-    // Advance to the next step that records, checks, checkpoints or reports, in one run (one
-    // OpenMP region); the split does not change the arithmetic (stepper.hpp).
-    const long k0 = sim.stepCount();
-    long next = scene.run.steps;
-    if (csv || tensile || plot) next = std::min(next, nextMultiple(k0, o.energiesEvery));
-    if (frames) next = std::min(next, nextMultiple(k0, o.framesEvery));
-    if (stopCheck) next = std::min(next, nextMultiple(k0, scene.run.checkEvery));
-    if (progress) next = std::min(next, nextMultiple(k0, every));
-    if (o.checkpointEvery > 0) next = std::min(next, nextMultiple(k0, o.checkpointEvery));
-    if (byMinutes) next = std::min(next, k0 + 1000);  // look at the clock at least every 1000 steps
-    if (options.interruptAfter >= 0) next = std::min(next, std::max(k0 + 1, options.interruptAfter));
-    sim.run(next - k0);
-    const long k = sim.stepCount();
-    if (options.interruptAfter >= 0 && k >= options.interruptAfter) {
-      r.interrupted = true;
-      break;
+  const long every = std::max(1L, totalSteps / 200);
+  std::unique_ptr<StageRun> previous;
+  for (; stageIndex < static_cast<std::int64_t>(stages.size()); ++stageIndex) {
+    const StageSpec& spec = stages[stageIndex];
+    auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageBodies, stageTime, implicit), dir,
+                                          stageIndex, stageTime, stageStep, stageBodies);
+    run->setStart(stageTime, stageStep);
+    Simulation& sim = run->sim();
+    const bool resumingHere = resumed && !previous;
+    if (resumingHere) {
+      resumed->restore(sim);
+      r.resumedFromStep = sim.stepCount();
+      run->open(&tail);
+    } else {
+      if (previous) {
+        carryEffectStates(previous->sim(), sim);
+        sim.refreshForces();
+      }
+      run->open(nullptr);
     }
-    const bool last = k == scene.run.steps;
-    if (stopCheck && k >= scene.run.minimumSteps && k % scene.run.checkEvery == 0 &&
-        sim.energies().kinetic() < scene.run.stopKineticEnergy) {
-      r.stoppedByCriterion = true;
-      record(true);
-      break;
+    if (r.timeStep == 0.0) r.timeStep = sim.timeStep(), r.criticalTimeStep = sim.stability().criticalTimeStep;
+    if (!resumingHere) {
+      run->record(true);
+      if (frames && stageIndex == 0) writeFrame(sim, run->scene());
     }
-    record(last);
-    const bool due = (o.checkpointEvery > 0 && k % o.checkpointEvery == 0) ||
-                     (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));
-    if (due && !last) checkpoint();
-    if (progress && (k % every == 0 || last)) progress(static_cast<double>(k) / scene.run.steps);
+    auto checkpoint = [&] {
+      writeCheckpoint(
+          checkpointPath, scene, sim, [&](BinaryWriter& out) { run->savePrelude(out); },
+          [&](BinaryWriter& out) {
+            out.write<std::int64_t>(xyz ? xyz->bytes() : -1);
+            out.write<std::int64_t>(frame);
+            run->saveOutputs(out);
+          });
+      lastCheckpoint = Clock::now();
+      ++r.checkpoints;
+    };
+    StageSummary summary;
+    summary.name = spec.name;
+    const long end = stageStep + spec.steps;
+    const bool stopCheck = spec.stopKineticEnergy > 0.0;
+    while (sim.stepCount() < end) {
+      // Advance to the next step that records, checks, checkpoints or reports, in one run (one
+      // OpenMP region); the split does not change the arithmetic (stepper.hpp).
+      const long k0 = sim.stepCount(), local = k0 - stageStep;
+      long next = end;
+      if (run->recordsEvery()) next = std::min(next, stageStep + nextMultiple(local, spec.energiesEvery));
+      if (frames) next = std::min(next, nextMultiple(k0, o.framesEvery));
+      if (stopCheck) next = std::min(next, stageStep + nextMultiple(local, spec.checkEvery));
+      if (progress) next = std::min(next, nextMultiple(k0, every));
+      if (o.checkpointEvery > 0) next = std::min(next, nextMultiple(k0, o.checkpointEvery));
+      if (byMinutes) next = std::min(next, k0 + 1000);  // look at the clock at least every 1000 steps
+      if (options.interruptAfter >= 0) next = std::min(next, std::max(k0 + 1, options.interruptAfter));
+      sim.run(next - k0);
+      const long k = sim.stepCount();
+      if (options.interruptAfter >= 0 && k >= options.interruptAfter) {
+        r.interrupted = true;
+        break;
+      }
+      const bool last = k == end;
+      bool stop = false;
+      if (stopCheck && k - stageStep >= spec.minimumSteps && (k - stageStep) % spec.checkEvery == 0 &&
+          sim.energies().kinetic() < spec.stopKineticEnergy) {
+        summary.stoppedByCriterion = true;
+        stop = true;
+      }
+      run->record(last || stop);
+      if (run->reachedFinalStrain()) stop = true, summary.reachedFinalStrain = true;
+      if (frames && (k % o.framesEvery == 0 || last || stop)) writeFrame(sim, run->scene());
+      const bool due = (o.checkpointEvery > 0 && k % o.checkpointEvery == 0) ||
+                       (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));
+      if (due && !last && !stop) checkpoint();  // (a finished stage moves on at once)
+      if (progress && (k % every == 0 || last)) progress(std::min(1.0, static_cast<double>(k) / totalSteps));
+      if (stop) break;
+    }
+    summary.steps = sim.stepCount() - stageStep;
+    summary.time = sim.time() - stageTime;
+    summary.finalEnergies = sim.energies();
+    if (r.interrupted) {
+      r.steps = sim.stepCount(), r.time = sim.time(), r.finalEnergies = summary.finalEnergies;
+      return r;
+    }
+    run->finish(summary);
+    r.stages.push_back(summary);
+    stageTime = sim.time(), stageStep = sim.stepCount(), stageBodies = sim.bodies();
+    previous = std::move(run);
   }
+  const Simulation& sim = previous->sim();
   r.steps = sim.stepCount();
   r.time = sim.time();
   r.finalEnergies = sim.energies();
-  if (r.interrupted) return r;
-  if (plot) plot->write(prepare(o.plotPng));
-  if (tensile) {
-    if (!scene.tensile.png.empty()) tensile->writePlot(prepare(scene.tensile.png));
-    const TensileSample& lastSample = tensile->samples().back();
-    r.tensile = true, r.finalStrain = lastSample.strain, r.finalStress = lastSample.stress;
-    for (const TensileSample& t : tensile->samples()) r.peakStress = std::max(r.peakStress, t.stress);
-    r.initialStress = tensile->samples().front().stress;
-  }
+  for (const LedgerEntry& e : r.finalEnergies.entries()) r.dissipatedTracked = r.dissipatedTracked || e.kind == EnergyKind::Dissipated;
+  const StageSummary& last = r.stages.back();
+  r.stoppedByCriterion = last.stoppedByCriterion;
+  for (const StageSummary& st : r.stages)
+    if (st.tensile) {
+      r.tensile = true, r.finalStrain = st.finalStrain, r.finalStress = st.finalStress;
+      r.peakStress = st.peakStress, r.initialStress = st.initialStress;
+    }
   fs::remove(checkpointPath, ec);  // the run is complete: nothing to resume
   return r;
 }

@@ -22,6 +22,19 @@ struct RunOptions {
   long interruptAfter = -1;
 };
 
+struct StageSummary {
+  std::string name;              // "" for a scene without [[stages]]
+  long steps = 0;
+  double time = 0.0;             // ns, of the stage
+  bool stoppedByCriterion = false;
+  bool reachedFinalStrain = false;
+  EnergyLedger finalEnergies;
+  bool tensile = false;
+  double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;  // MPa
+  double crossSection = 0.0, gaugeLength = 0.0;  // nm^2, nm
+  std::string tensileCsv;
+};
+
 struct RunSummary {
   long steps = 0;
   double time = 0.0;             // ns
@@ -31,6 +44,7 @@ struct RunSummary {
   long checkpoints = 0;          // written by this invocation
   std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting
   EnergyLedger finalEnergies;
+  std::vector<StageSummary> stages;  // those completed by this invocation
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
   bool dissipatedTracked = false;  // the scene has an effect that dissipates (dashpots)

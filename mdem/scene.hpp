@@ -62,10 +62,31 @@ struct TensileSpec {
   double alignedAngle = 0.0;    // rad, aligned pairs cross below this angle
   std::string csv = "tensile.csv";
   std::string png;              // "" = none
-  // Filled by setUpTensile: the grips and the gauge length.
+  double finalStrain = 0.0;      // > 0: the test (stage) ends when the strain reaches this
+  // Filled by setUpTensile from the positions at the start of the test: the grips, the gauge
+  // length, the grips' mean axial positions then, and the time the test starts.
   std::vector<int> leftGrip, rightGrip;
   double gaugeLength = 0.0;     // nm
   double gripSpeed = 0.0;       // nm/ns, each grip (the two move apart at 2 x this)
+  double leftReference = 0.0, rightReference = 0.0;  // nm
+  double startTime = 0.0;       // ns
+};
+
+// [[stages]]: one step of a protocol (relax, then pull); the state flows from stage to stage
+// (docs/scene-file.md, stages). Without stages a scene is one stage made of [run], [output]'s
+// time series and [tensile].
+struct StageSpec {
+  std::string name;
+  bool tensileStage = false;            // kind = "tensile" (grips chosen at the stage's start)
+  long steps = 0;                       // maximum steps of the stage
+  double stopKineticEnergy = -1.0;      // zJ (< 0: off)
+  long checkEvery = 100;
+  long minimumSteps = 0;
+  std::vector<std::string> addEffects;  // named for this stage only, on top of `effects`
+  std::string energiesCsv;              // the stage's own time series ("" = none)
+  long energiesEvery = 100;
+  std::string plotPng;
+  TensileSpec tensile;                  // tensile stages
 };
 
 struct Scene {
@@ -85,6 +106,7 @@ struct Scene {
   RunControl run;
   OutputSpec output;
   TensileSpec tensile;
+  std::vector<StageSpec> stages;      // empty: one stage from [run], [output] and [tensile]
 };
 
 // Cross-section of a bond whose first element has type t.

@@ -244,7 +244,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
     if (s.run.timeStepFraction > 1.0)
       run.fail("time_step_fraction", std::to_string(s.run.timeStepFraction), "a fraction in (0, 1]");
   }
-  s.run.steps = run.integer("steps");
+  s.run.steps = root.has("stages") && !run.has("steps") ? 0 : run.integer("steps");
   if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
   s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;
   s.run.checkEvery = run.integer("check_every", 100);
@@ -273,6 +273,73 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
       s.output.probes.push_back(elementIndex(p, s.bodies.size(), out, "probes"));
 }
 
+
+void readTensileTable(const TomlTable& t, TensileSpec& ts) {
+  t.allowOnly({"axis", "grip_width_nm", "strain_rate_per_ns", "ramp_ns", "cross_section_nm2", "contact_gap_nm",
+               "aligned_angle_deg", "csv", "plot_png", "final_strain"});
+  ts.enabled = true;
+  const std::string axis = t.string("axis", "x");
+  if (axis != "x" && axis != "y") t.fail("axis", "\"" + axis + "\"", "\"x\" or \"y\" (in the film plane)");
+  ts.axis = axis == "x" ? 0 : 1;
+  ts.gripWidth = t.positive("grip_width_nm");
+  ts.strainRate = t.positive("strain_rate_per_ns");
+  ts.ramp = t.nonNegative("ramp_ns", 0.0);
+  ts.crossSection = t.has("cross_section_nm2") ? t.positive("cross_section_nm2") : 0.0;
+  ts.contactGap = t.nonNegative("contact_gap_nm", 0.5);
+  ts.alignedAngle = t.number("aligned_angle_deg", 10.0) * units::kPi / 180.0;
+  if (ts.alignedAngle < 0.0 || ts.alignedAngle > 0.5 * units::kPi)
+    t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
+  ts.csv = t.string("csv", ts.csv);
+  ts.png = t.string("plot_png", "");
+  ts.finalStrain = t.has("final_strain") ? t.positive("final_strain") : 0.0;
+}
+
+// [[stages]] (docs/scene-file.md): [run] keeps the time step; its steps and stop keys move to
+// the stages.
+void readStages(const TomlTable& root, Scene& s) {
+  const TomlTable run = root.table("run");
+  for (const char* k : {"steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps"})
+    if (run.has(k)) run.fail(k, "a [run] stop key beside [[stages]]", "the key in each stage (the time step stays in [run])");
+  if (!s.output.energiesCsv.empty() || !s.output.plotPng.empty())
+    root.fail("output", "energies_csv / plot_png in [output] beside [[stages]]", "each stage's own energies_csv / plot_png");
+  for (const TomlTable& t : root.tables("stages")) {
+    t.allowOnly({"name", "kind", "steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps", "add_effects",
+                 "energies_csv", "energies_every", "plot_png", "tensile"});
+    StageSpec st;
+    st.name = t.string("name");
+    if (st.name.empty()) t.fail("name", "an empty name", "a stage name (used in file names and messages)");
+    for (const StageSpec& o : s.stages)
+      if (o.name == st.name) t.fail("name", "\"" + st.name + "\" given twice", "a name of its own for each stage");
+    const std::string kind = t.string("kind", "relax");
+    if (kind == "compression")
+      t.fail("kind", "\"compression\" (not implemented yet)", "\"relax\" or \"tensile\"");
+    if (kind != "relax" && kind != "tensile") t.fail("kind", "\"" + kind + "\"", "\"relax\" or \"tensile\"");
+    st.tensileStage = kind == "tensile";
+    st.steps = t.integer("steps");
+    if (st.steps < 1) t.fail("steps", std::to_string(st.steps), "at least 1 step");
+    st.stopKineticEnergy = t.has("stop_kinetic_energy_zJ") ? t.positive("stop_kinetic_energy_zJ") : -1.0;
+    st.checkEvery = t.integer("check_every", 100);
+    if (st.checkEvery < 1) t.fail("check_every", std::to_string(st.checkEvery), "at least 1");
+    st.minimumSteps = t.integer("minimum_steps", 0);
+    if (t.has("add_effects")) st.addEffects = t.strings("add_effects");
+    for (const std::string& e : st.addEffects)
+      if (std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end())
+        t.fail("add_effects", "\"" + e + "\", already in effects", "effects named for this stage only");
+    st.energiesCsv = t.string("energies_csv", st.name + "-energies.csv");
+    st.energiesEvery = t.integer("energies_every", 100);
+    if (st.energiesEvery < 1) t.fail("energies_every", std::to_string(st.energiesEvery), "at least 1");
+    st.plotPng = t.string("plot_png", "");
+    if (st.tensileStage != t.has("tensile"))
+      t.fail("tensile", st.tensileStage ? "a tensile stage without its [stages.tensile] table" : "a [stages.tensile] table in a relax stage",
+             "kind = \"tensile\" with its table, or neither");
+    if (st.tensileStage) {
+      st.tensile.csv = st.name + "-tensile.csv";
+      readTensileTable(t.table("tensile"), st.tensile);
+    }
+    s.stages.push_back(std::move(st));
+  }
+  if (s.stages.empty()) root.fail("stages", "an empty list", "at least one [[stages]] table");
+}
 }  // namespace
 
 void readModelTables(const TomlTable& root, Scene& s) {
@@ -288,7 +355,7 @@ Scene loadScene(const std::string& path) {
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
                   "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
-                  "periodic", "network", "tensile"});
+                  "periodic", "network", "tensile", "stages"});
   if (root.integer("format") != 1)
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
@@ -325,8 +392,14 @@ Scene loadScene(const std::string& path) {
     t.allowOnly({"rate_per_ns"});
     s.viscousRate = t.positive("rate_per_ns");
   }
+  std::vector<std::string> stageEffects;  // named by a stage only
+  if (root.has("stages"))
+    for (const TomlTable& t : root.tables("stages"))
+      if (t.has("add_effects"))
+        for (const std::string& e : t.strings("add_effects")) stageEffects.push_back(e);
   for (const char* e : {"local_damping", "viscous_damping"}) {
-    const bool named = std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end();
+    const bool named = std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end() ||
+                       std::find(stageEffects.begin(), stageEffects.end(), e) != stageEffects.end();
     if (root.has(e) && !named)
       root.fail(e, "parameters for an effect that is not listed", "\"" + std::string(e) + "\" in effects");
     if (!root.has(e) && named && std::string(e) == "viscous_damping")
@@ -337,26 +410,12 @@ Scene loadScene(const std::string& path) {
   if (s.bodies.size() == 0)
     throw InputError(path, "keys elements / filaments", "no elements", "at least one element");
   if (root.has("tensile")) {
-    const TomlTable t = root.table("tensile");
-    t.allowOnly({"axis", "grip_width_nm", "strain_rate_per_ns", "ramp_ns", "cross_section_nm2", "contact_gap_nm",
-                 "aligned_angle_deg", "csv", "plot_png"});
-    TensileSpec& ts = s.tensile;
-    ts.enabled = true;
-    const std::string axis = t.string("axis", "x");
-    if (axis != "x" && axis != "y") t.fail("axis", "\"" + axis + "\"", "\"x\" or \"y\" (in the film plane)");
-    ts.axis = axis == "x" ? 0 : 1;
-    ts.gripWidth = t.positive("grip_width_nm");
-    ts.strainRate = t.positive("strain_rate_per_ns");
-    ts.ramp = t.nonNegative("ramp_ns", 0.0);
-    ts.crossSection = t.has("cross_section_nm2") ? t.positive("cross_section_nm2") : 0.0;
-    ts.contactGap = t.nonNegative("contact_gap_nm", 0.5);
-    ts.alignedAngle = t.number("aligned_angle_deg", 10.0) * units::kPi / 180.0;
-    if (ts.alignedAngle < 0.0 || ts.alignedAngle > 0.5 * units::kPi)
-      t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
-    ts.csv = t.string("csv", "tensile.csv");
-    ts.png = t.string("plot_png", "");
+    if (root.has("stages"))
+      root.fail("tensile", "a [tensile] table beside [[stages]]", "the test as a stage with kind = \"tensile\"");
+    readTensileTable(root.table("tensile"), s.tensile);
     setUpTensile(s);
   }
+  if (root.has("stages")) readStages(root, s);
   return s;
 }
 

@@ -20,12 +20,13 @@ std::vector<Effect*> pointers(const std::vector<EffectPtr>& effects) {
 }
 }  // namespace
 
-Simulation::Simulation(const Scene& scene)
-    : state_{scene.bodies, 0.0},
+Simulation::Simulation(const Scene& scene, double startTime, long startStep)
+    : state_{scene.bodies, startTime},
       kinematics_(scene.boundary, scene.bodies.size()),
       effects_(buildEffects(scene)),
       sequence_(pointers(effects_)),
-      h_(scene.run.timeStep) {
+      h_(scene.run.timeStep),
+      steps_(startStep) {
   std::vector<ContactStabilityTerms> contactTerms(scene.elementTypes.size());
   for (const EffectPtr& e : effects_) e->addStabilityTerms(contactTerms);
   limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, contactTerms);
@@ -49,7 +50,7 @@ Simulation::Simulation(const Scene& scene)
                                  limit_.criticalTimeStep, limit_.limitedBy, limit_.omega,
                                  limit_.dampingRate, limit_.rotational ? "rotation" : "translation",
                                  limit_.element));
-  kinematics_.apply(state_.bodies, 0.0);
+  kinematics_.apply(state_.bodies, startTime);
   evaluateForces(state_, sequence_, kinematics_, true, true);
 }
 

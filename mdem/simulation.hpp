@@ -17,7 +17,8 @@ class Simulation {
  public:
   // Throws InputError (naming scene.source and key run.time_step_ns) when the time step is not
   // positive or exceeds the critical time step, and for effects that are not registered.
-  explicit Simulation(const Scene& scene);
+  // A later stage of a run starts at `startTime` (ns) and step `startStep`.
+  explicit Simulation(const Scene& scene, double startTime = 0.0, long startStep = 0);
 
   void step() { run(1); }
   void run(long steps);

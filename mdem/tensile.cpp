@@ -20,9 +20,9 @@ namespace mesochain::mdem {
 namespace {
 double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 
-double meanAxial(const Bodies& b, const std::vector<int>& grip, int axis, bool initial) {
+double meanAxial(const Bodies& b, const std::vector<int>& grip, int axis) {
   double s = 0.0;
-  for (int i : grip) s += (initial ? b.initialPosition[i] : b.position[i])[axis];
+  for (int i : grip) s += b.position[i][axis];
   return s / grip.size();
 }
 
@@ -66,6 +66,7 @@ void setUpTensile(Scene& s) {
     t.crossSection = s.filmSize[1 - a] * (s.filmSize.z() + 2.0 * r);
   }
   t.gripSpeed = 0.5 * t.strainRate * t.gaugeLength;
+  t.leftReference = meanAxial(b, t.leftGrip, a), t.rightReference = meanAxial(b, t.rightGrip, a);
   for (int side = 0; side < 2; ++side)
     for (int i : side == 0 ? t.leftGrip : t.rightGrip) {
       FixedDofs f;
@@ -73,6 +74,7 @@ void setUpTensile(Scene& s) {
       f.fixed[a] = true;
       f.velocity[a] = side == 0 ? -t.gripSpeed : t.gripSpeed;
       f.ramp = t.ramp;
+      f.start = t.startTime;
       s.boundary.fixed.push_back(f);
     }
 }
@@ -90,11 +92,11 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
   const int a = t.axis;
   TensileSample s;
   s.time = sim.time();
-  const double du = (meanAxial(b, t.rightGrip, a, false) - meanAxial(b, t.rightGrip, a, true)) -
-                    (meanAxial(b, t.leftGrip, a, false) - meanAxial(b, t.leftGrip, a, true));
+  const double du = (meanAxial(b, t.rightGrip, a) - t.rightReference) - (meanAxial(b, t.leftGrip, a) - t.leftReference);
   s.strain = du / t.gaugeLength;
   const std::vector<Vec3> f = sim.unconstrainedForces();
-  const double acc = rampAcceleration(s.time, t.ramp, t.gripSpeed), vel = rampVelocity(s.time, t.ramp, t.gripSpeed);
+  const double tt = s.time - t.startTime;
+  const double acc = rampAcceleration(tt, t.ramp, t.gripSpeed), vel = rampVelocity(tt, t.ramp, t.gripSpeed);
   double power = 0.0;
   for (int side = 0; side < 2; ++side) {
     const double sign = side == 0 ? -1.0 : 1.0;

@@ -217,3 +217,99 @@ TEST_F(Restart, FreshRunIntoAnInterruptedRunsFolderIsRefused) {
 
 }  // namespace
 }  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// Stages: relax (with local damping named for that stage only) then pull, in one scene.
+std::string stagedScene(long relaxSteps, long pullSteps) {
+  std::string text = sceneText(0, 20);
+  text.replace(text.find("effects = [\"bonds\", \"vdw_contact\", \"contact_damping\", \"local_damping\"]"),
+               std::string("effects = [\"bonds\", \"vdw_contact\", \"contact_damping\", \"local_damping\"]").size(),
+               "effects = [\"bonds\", \"vdw_contact\", \"contact_damping\"]");
+  text.replace(text.find("steps = 0\n"), 10, "");
+  text.replace(text.find("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n"),
+               std::string("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n").size(), "");
+  const std::size_t tensile = text.find("[tensile]");
+  text = text.substr(0, tensile);
+  text += fmt::format(R"([[stages]]
+name = "relax"
+steps = {}
+add_effects = ["local_damping"]
+energies_every = 20
+plot_png = "relax.png"
+[[stages]]
+name = "pull"
+kind = "tensile"
+steps = {}
+energies_every = 20
+[stages.tensile]
+grip_width_nm = 3.0
+strain_rate_per_ns = 0.5
+ramp_ns = 0.01
+final_strain = 0.5
+)",
+                      relaxSteps, pullSteps);
+  return text;
+}
+
+TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  EXPECT_EQ(reference.stages[0].name, "relax");
+  EXPECT_EQ(reference.stages[0].steps, 90);
+  EXPECT_TRUE(reference.stages[1].tensile);
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax-energies.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax.png"));
+  // The pull's strain counts from the grips' places at its start: 0 in its first row.
+  std::ifstream csv(dir_ / "reference" / "pull-tensile.csv");
+  std::string header, row;
+  std::getline(csv, header), std::getline(csv, row);
+  EXPECT_EQ(row.substr(row.find(',') + 1, 2), "0,") << row;
+  // Interrupted inside the relax, just after the boundary's checkpoint, and inside the pull.
+  for (long at : {35L, 90L, 95L, 150L}) {
+    const std::string out = fmt::format("at{}", at);
+    RunOptions kill;
+    kill.interruptAfter = at;
+    ASSERT_TRUE(run(out, kill).interrupted);
+    RunOptions resume;
+    resume.resume = true;
+    const RunSummary r = run(out, resume);
+    EXPECT_EQ(r.steps, reference.steps) << at;
+    EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
+    EXPECT_EQ(r.finalStress, reference.finalStress) << at;
+    for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
+      EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
+  }
+}
+
+TEST_F(Restart, StageErrorsNameTheKey) {
+  auto expectError = [&](const std::string& text, const char* key) {
+    std::ofstream(scenePath_) << text;
+    try {
+      loadScene(scenePath_);
+      ADD_FAILURE() << "accepted, expected an error at " << key;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  const std::string good = stagedScene(10, 10);
+  std::string t = good;
+  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"compression\"");
+  expectError(t, "stages[1].kind");
+  t = good;
+  t.replace(t.find("name = \"pull\""), 13, "name = \"relax\"");
+  expectError(t, "stages[1].name");
+  t = good;
+  t.replace(t.find("[stages.tensile]"), 16, "[unused]");
+  expectError(t, "stages");
+  expectError(good + "[tensile]\ngrip_width_nm = 3.0\nstrain_rate_per_ns = 0.5\n", "tensile");
+  t = good;
+  t.replace(t.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nsteps = 5\n");
+  expectError(t, "run.steps");
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
