@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::skgen {
@@ -70,10 +71,7 @@ void writeSkfFile(const std::string& path, const dftb::SkfTable& t,
   }
   if (!documentation.empty()) out << "\n" << documentation << (documentation.back() == '\n' ? "" : "\n");
 
-  std::ofstream f(path);
-  if (!f) throw InputError(path, "cannot write the Slater-Koster file");
-  f << out.str();
-  if (!f) throw InputError(path, "writing the Slater-Koster file failed");
+  writeFileAtomically(path, out.str());
 }
 
 }  // namespace mesochain::skgen
