@@ -95,3 +95,15 @@ TEST(DriverGeometry, OversizedBuildsAreRefusedWithTheEstimate) {
   const std::string unrolled = messageOf([&] { unroll(cell, 0, 100000000); });
   EXPECT_NE(unrolled.find("at most 10000000 unrolled atoms"), std::string::npos) << unrolled;
 }
+
+// 50000 carbon atoms: 200000 orbitals, at least 1.9 TB for the band matrices of one k-point;
+// refused with the estimate before anything is allocated (a bare std::bad_alloc otherwise).
+TEST(DriverGeometry, CalculatorRefusesACellBeyondTheMachinesMemory) {
+  ObjectiveCell cell;
+  cell.symmetry = Symmetry::screw(1000.0, 0.0, 1);
+  for (int a = 0; a < 50000; ++a) cell.addAtom("C", {3.0 * (a % 200), 3.0 * (a / 200), 0.0});
+  const dftb::Calculator calc(carbon(), settings(1));
+  const std::string m = messageOf([&] { calc.evaluate(cell, {false, false}); });
+  EXPECT_NE(m.find("50000 atoms with 200000 orbitals"), std::string::npos) << m;
+  EXPECT_NE(m.find("GB of this machine"), std::string::npos) << m;
+}
