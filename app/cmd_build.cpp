@@ -3,8 +3,10 @@
 // translational cell), of concentric walls sharing one translational period, or of a bent
 // AB-stacked graphene stack (one sector of a ring); atoms inline, symmetry, k-points, task.
 #include <algorithm>
+#include <charconv>
+#include <optional>
+#include <utility>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -66,6 +68,21 @@ void addCommonOptions(CLI::App* s, CommonOptions& o, const std::string& defaultN
       ->check(nonEmptyPath());
 }
 
+// "n,m" -> (n, m) with 1 <= n <= 10000 and 0 <= m <= 10000 (the limits of the cell file's
+// builder); nullopt when the text is not two integers in range (read as 64-bit, no wrapping).
+std::optional<std::pair<int, int>> chiralPair(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  long long n = 0, m = 0;
+  const char* end = text.data() + text.size();
+  const auto a = std::from_chars(text.data(), text.data() + comma, n);
+  const auto b = std::from_chars(text.data() + comma + 1, end, m);
+  if (a.ec != std::errc() || a.ptr != text.data() + comma || b.ec != std::errc() || b.ptr != end)
+    return std::nullopt;
+  if (n < 1 || n > 10000 || m < 0 || m > 10000) return std::nullopt;
+  return std::make_pair(static_cast<int>(n), static_cast<int>(m));
+}
+
 // Completes the cell input around `cell` and writes it; `what` describes the structure.
 int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std::string& defaultPath,
                const std::string& what) {
@@ -111,11 +128,11 @@ int buildMultiWall(const MultiWallOptions& w, const CommonOptions& o) {
   std::vector<std::pair<int, int>> walls;
   std::string name = "mw", what;
   for (const std::string& s : w.walls) {
-    int n = 0, m = 0;
-    char comma = 0, rest = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &n, &comma, &m, &rest) != 3 || comma != ',')
+    const auto nm = chiralPair(s);
+    if (!nm)
       throw InputError("<command line>", "build multiwall, wall '" + s + "'", "'" + s + "'",
-                       "chiral indices written n,m (e.g. 5,5)");
+                       "chiral indices written n,m (e.g. 5,5) with 1 <= n <= 10000, 0 <= m <= 10000");
+    const auto [n, m] = *nm;
     walls.emplace_back(n, m);
     name += fmt::format("{}{}-{}", walls.size() > 1 ? "_" : "", n, m);
     what += fmt::format("{}({},{})", walls.size() > 1 ? "@" : "", n, m);
@@ -129,13 +146,15 @@ int buildRing(const RingOptions& r, const CommonOptions& o) {
       r.direction == "armchair" ? objective::Direction::Armchair : objective::Direction::Zigzag);
   std::string name = r.direction;
   if (r.direction == "chiral") {
-    char comma = 0, rest = 0;
     if (r.chiral.empty())
       throw InputError("<command line>", "build graphene-ring --chiral", "nothing",
                        "--chiral n,m with --direction chiral (e.g. 2,1)");
-    if (std::sscanf(r.chiral.c_str(), "%d%c%d%c", &dir.n, &comma, &dir.m, &rest) != 3 || comma != ',')
+    const auto nm = chiralPair(r.chiral);
+    if (!nm)
       throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",
-                       "chiral indices written n,m (e.g. 2,1)");
+                       "chiral indices written n,m (e.g. 2,1) with 1 <= n <= 10000, 0 <= m <= 10000");
+    dir.n = nm->first;
+    dir.m = nm->second;
     name = fmt::format("{}-{}", dir.n, dir.m);
   } else if (!r.chiral.empty()) {
     throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",

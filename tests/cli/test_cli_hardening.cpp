@@ -75,6 +75,10 @@ TEST(CliHardening, BuildOptionsOutOfRangeAreRefused) {
        "--rotation-order.*3000000000.*3 to 10000000", {"b.toml"}},
       {"bond 0.2 Å", "build cnt 5 5 --bond 0.2 -o b.toml", "command line.*0.50 Å", {"b.toml"}},
       {"n 0", "build cnt 0 0 -o b.toml", "1 to 10000", {"b.toml"}},
+      {"wall 5000000000,0", "build multiwall 5,5 5000000000,0 -o b.toml",
+       "wall '5000000000,0'.*n <= 10000", {"b.toml"}},
+      {"chiral 2,-1", "build graphene-ring 1 --direction chiral --chiral 2,-1 --rotation-order 12 -o b.toml",
+       "--chiral.*0 <= m <= 10000", {"b.toml"}},
       {"output in no folder", "build cnt 5 5 -o /nonexistent/b.toml", "/nonexistent.*does not exist"},
   };
   for (const Case& c : cases) expectRefused(c);
