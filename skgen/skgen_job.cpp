@@ -253,6 +253,13 @@ SkgenJob readSkgenJob(const std::string& path) {
                                     : (std::filesystem::path(path).parent_path() / curve).string();
       r.cutoff = t.number("cutoff_bohr", "the repulsive cutoff in bohr");
       if (!(r.cutoff > 0.0)) t.fail("cutoff_bohr", fmt::format("{}", r.cutoff), "a cutoff > 0");
+      // The integral table must reach beyond the repulsion (the .skf reader refuses a table
+      // whose grid ends before its repulsive cutoff: dftb/skf_file.cpp).
+      if (r.cutoff > job.grid.cutoff)
+        t.fail("cutoff_bohr",
+               fmt::format("{} bohr, beyond the integral grid ([grid] cutoff_bohr = {} bohr)",
+                           r.cutoff, job.grid.cutoff),
+               "a repulsive cutoff within the integral grid");
       if (t.has("intervals")) {
         const long n = t.integer("intervals", "an integer 1..200");
         if (n < 1 || n > 200) t.fail("intervals", fmt::format("{}", n), "an integer 1..200");
