@@ -6,10 +6,15 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include "common/atomic_file.hpp"
+#include "common/errors.hpp"
 
 namespace mesochain::app {
 
@@ -52,6 +57,18 @@ inline CLI::Validator nonEmptyPath() {
         return text.empty() ? std::string("found an empty path; expected a file path") : "";
       },
       "PATH");
+}
+
+// Makes the output folder `dir` (with its parents) and checks a file can be written in it,
+// before the computation: InputError(source, where, ...) naming the folder otherwise.
+inline void prepareOutputFolder(const std::string& dir, const std::string& source,
+                                const std::string& where) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw InputError(source, where, "\"" + dir + "\", which cannot be created (" + ec.message() + ")",
+                     "a folder that can be created or exists");
+  requireWritableOutput((std::filesystem::path(dir) / "file").string(), source, where);
 }
 
 }  // namespace mesochain::app

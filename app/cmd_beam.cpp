@@ -62,6 +62,7 @@ int runPlateCommand(const PlateOptions& o) {
   beam::readPlateFile(o.file, in);
   in.tolerance = o.tolerance;
   in.measuredCurvature = o.measuredCurvature;
+  prepareOutputFolder(o.outputDir, "<command line>", "option --output-dir");
   beam::PlateRun run = beam::runPlate(in);
   requireFiniteJson(run.report, (fs::path(o.outputDir) / "plate.json").string());
   fs::create_directories(o.outputDir);
@@ -132,14 +133,16 @@ Command makeBeamCommand() {
     s->add_option("--T0-bohr", opt->t0, "cell length T0")->check(finiteNumber(false));
     s->add_option("--atoms-per-cell", opt->atoms, "carbon atoms per cell (mass)")
         ->check(integerIn(1, beam::kMaxAtomsPerCell));
-    s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml");
+    s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml")
+        ->check(nonEmptyPath());
     s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)")
         ->check(integerIn(2, 1000000));
     CLI::App* p = s->add_subcommand(
         "plate", "N-layer bending rigidities (bend scans or given) against the bonded plate and sliding layers");
     *plateSub = p;
     p->add_option("file", plate->file, "plate file (.toml, docs/beam.md)")->required();
-    p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots");
+    p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots")
+        ->check(nonEmptyPath());
     p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime (default 0.02)")
         ->check(finiteNumber(false, 1.0));
     p->add_flag("--measured-curvature", plate->measuredCurvature, "fit bends against the measured curvature");
@@ -187,6 +190,7 @@ Command makeBeamCommand() {
     in.measuredCurvature = opt->measuredCurvature;
     if (opt->bricks < 2) throw InputError(cl, "--bricks", std::to_string(opt->bricks), "at least 2");
 
+    prepareOutputFolder(opt->outputDir, cl, "option --output-dir");
     beam::BeamRun run = beam::runBeam(in);
     fs::create_directories(opt->outputDir);
     const fs::path dir(opt->outputDir);

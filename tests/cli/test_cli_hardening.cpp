@@ -125,6 +125,11 @@ TEST(CliHardening, BeamOverflowsAndWrappedIntegersAreRefused) {
                 cellFile(), head + "T0_angstrom = 2.46\ncells_per_brick = 3e9\nC_eV = 6770.0\n" + rest);
   expectRefused({"-n 0", "beam beam.toml -o out -n 0", "cells-per-brick", written}, cellFile(),
                 head + "T0_angstrom = 2.46\ncells_per_brick = 8\nC_eV = 6770.0\n" + rest);
+  const std::string fine = head + "T0_angstrom = 2.46\ncells_per_brick = 8\nC_eV = 6770.0\n" + rest;
+  expectRefused({"-o ''", "beam beam.toml -o ''", "output-dir.*empty path"}, cellFile(), fine);
+  expectRefused({"-o in /proc", "beam beam.toml -o /proc/no/such", "option --output-dir.*cannot be created"},
+                cellFile(), fine);
+  expectRefused({"skgen -o ''", "skgen x.toml -o ''", "output-dir.*empty path"});
 }
 
 // A stretch of -90 % puts the atoms of a (5,5) tube 0.25 Å apart: an error naming the scan
