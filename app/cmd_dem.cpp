@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
@@ -39,13 +40,17 @@ Command makeDemCommand() {
     *sub = app.add_subcommand("dem", "run a mesoscopic distinct element (mDEM) scene");
     (*sub)->add_option("scene", opt->scene, "scene file (TOML, format = 1)")->required();
     (*sub)->add_option("-o,--output-dir", opt->outputDir,
-                       "folder for the outputs (default: output.directory of the scene)");
+                       "folder for the outputs (default: output.directory of the scene)")
+        ->check(nonEmptyPath());
     (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
     const mdem::Scene scene = mdem::loadScene(opt->scene);
     const std::string dir = opt->outputDir.empty() ? scene.output.directory : opt->outputDir;
+    // Made and checked before the run, not found unwritable at the first output.
+    prepareOutputFolder(dir, opt->outputDir.empty() ? opt->scene : "<command line>",
+                        opt->outputDir.empty() ? "key output.directory" : "option --output-dir");
     std::function<void(double)> progress;
     if (!opt->quiet) progress = drawProgress;
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress);

@@ -130,6 +130,7 @@ TEST(CliHardening, BeamOverflowsAndWrappedIntegersAreRefused) {
   expectRefused({"-o in /proc", "beam beam.toml -o /proc/no/such", "option --output-dir.*cannot be created"},
                 cellFile(), fine);
   expectRefused({"skgen -o ''", "skgen x.toml -o ''", "output-dir.*empty path"});
+  expectRefused({"dem -o ''", "dem x.toml -o ''", "output-dir.*empty path"});
 }
 
 // A stretch of -90 % puts the atoms of a (5,5) tube 0.25 Å apart: an error naming the scan
