@@ -1,6 +1,7 @@
 // Geometry made by a driver passes the check of a read geometry: a relaxation refuses a
 // starting cell (or a step) with collapsed atoms, a scan names the point, a checkpoint with
 // coincident atoms names the file and point, and builders refuse cells too large to allocate.
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -106,4 +107,23 @@ TEST(DriverGeometry, CalculatorRefusesACellBeyondTheMachinesMemory) {
   const std::string m = messageOf([&] { calc.evaluate(cell, {false, false}); });
   EXPECT_NE(m.find("50000 atoms with 200000 orbitals"), std::string::npos) << m;
   EXPECT_NE(m.find("GB of this machine"), std::string::npos) << m;
+}
+
+// A non-finite energy never leaves the calculator as a result (it would be written as null with
+// exit 0): a dispersion strength of 1e308 Ha (finite, accepted by the term) overflows the pair
+// sum to inf, a NumericalError naming the term.
+TEST(DriverGeometry, NonFiniteEnergyIsANumericalError) {
+  dftb::CalculatorSettings s = settings(4);
+  s.dispersion.enabled = true;
+  s.dispersion.epsilon = 1e308;
+  s.dispersion.r0 = 3.8 * units::kAngstromInBohr;
+  s.dispersion.cutoff = 10.0 * units::kAngstromInBohr;
+  const dftb::Calculator calc(carbon(), s);
+  try {
+    calc.evaluate(buildNanotubeHelical(5, 5, kBond), {false, false});
+    FAIL() << "a non-finite energy was returned";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite dispersion energy"), std::string::npos)
+        << e.what();
+  }
 }
