@@ -198,7 +198,8 @@ XyzFrame readXyz(std::istream& in, const std::string& source) {
   // Symmetry and energy from the comment line.
   const char* keys[3] = {"mesochain:translation", "mesochain:twist", "mesochain:rotation_order"};
   int found = 0;
-  for (const auto& [key, value] : kv) {
+  for (const auto& entry : kv) {
+    const std::string& key = entry.first;  // (clang 14 cannot capture a structured binding)
     if (key.rfind("mesochain:", 0) == 0 &&
         std::find_if(keys, keys + 3, [&](const char* k) { return key == k; }) == keys + 3)
       r.fail(comment, "key '" + key + "'",
