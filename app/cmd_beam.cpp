@@ -13,13 +13,16 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
 #include "beam/mdem_export.hpp"
 #include "beam/plate_run.hpp"
 #include "beam/si_units.hpp"
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
+#include "common/finite_output.hpp"
 #include "common/plot/png_io.hpp"
 #include "common/units.hpp"
 
@@ -51,11 +54,7 @@ struct PlateOptions {
   bool measuredCurvature = false;
 };
 
-void writeFile(const fs::path& p, const std::string& text) {
-  std::ofstream out(p);
-  if (!out) throw InputError(p.string(), "cannot write the file");
-  out << text;
-}
+void writeFile(const fs::path& p, const std::string& text) { writeFileAtomically(p.string(), text); }
 
 // `mesochain beam plate FILE.toml`: N-layer rigidities against the bonded plate and sliding layers.
 int runPlateCommand(const PlateOptions& o) {
@@ -63,7 +62,9 @@ int runPlateCommand(const PlateOptions& o) {
   beam::readPlateFile(o.file, in);
   in.tolerance = o.tolerance;
   in.measuredCurvature = o.measuredCurvature;
+  prepareOutputFolder(o.outputDir, "<command line>", "option --output-dir");
   beam::PlateRun run = beam::runPlate(in);
+  requireFiniteJson(run.report, (fs::path(o.outputDir) / "plate.json").string());
   fs::create_directories(o.outputDir);
   const fs::path dir(o.outputDir);
   std::vector<std::string> fits;
@@ -108,28 +109,42 @@ Command makeBeamCommand() {
     *sub = s;
     s->add_option("inputs", opt->inputs,
                   "scan tables (.json, .csv), folders of them, and/or a constants file (.toml)");
-    s->add_option("-n,--cells-per-brick", opt->cellsPerBrick, "cells per brick (L = n T0)");
-    s->add_option("--closure", opt->closure, "four_constants (default) or measured_thickness");
-    s->add_option("--section", opt->section, "rectangle (default), circle or annulus");
-    s->add_option("--wall-thickness-angstrom", opt->wallAngstrom, "annulus wall (default 3.4)");
-    s->add_option("--thickness-angstrom", opt->thicknessAngstrom, "measured thickness h (overrides the scans')");
-    s->add_option("--linear-term", opt->linearTerm, "auto (stretch, twist: on; bend: off), on, off");
-    s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime (default 0.02)");
+    s->add_option("-n,--cells-per-brick", opt->cellsPerBrick, "cells per brick (L = n T0)")
+        ->check(integerIn(1, beam::kMaxCellsPerBrick));
+    s->add_option("--closure", opt->closure, "four_constants (default) or measured_thickness")
+        ->check(CLI::IsMember({"four_constants", "measured_thickness"}));
+    s->add_option("--section", opt->section, "rectangle (default), circle or annulus")
+        ->check(CLI::IsMember({"rectangle", "circle", "annulus"}));
+    s->add_option("--wall-thickness-angstrom", opt->wallAngstrom, "annulus wall (default 3.4)")
+        ->check(finiteNumber(false));
+    s->add_option("--thickness-angstrom", opt->thicknessAngstrom, "measured thickness h (overrides the scans')")
+        ->check(finiteNumber(false));
+    s->add_option("--linear-term", opt->linearTerm, "auto (stretch, twist: on; bend: off), on, off")
+        ->check(CLI::IsMember({"auto", "on", "off"}));
+    s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime (default 0.02)")
+        ->check(finiteNumber(false, 1.0));
     s->add_flag("--measured-curvature", opt->measuredCurvature, "fit bends against the measured curvature");
-    s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)");
-    s->add_option("--K-hartree-per-rad2", opt->k, "twisting K per cell (U = K gamma^2 / 2)");
-    s->add_option("--D-soft-hartree-bohr2", opt->ds, "soft bending D_s per cell (U = D (1/R)^2 / 2)");
-    s->add_option("--D-hard-hartree-bohr2", opt->dh, "hard bending D_h per cell");
-    s->add_option("--T0-bohr", opt->t0, "cell length T0");
-    s->add_option("--atoms-per-cell", opt->atoms, "carbon atoms per cell (mass)");
-    s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml");
-    s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)");
+    s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)")->check(finiteNumber(false));
+    s->add_option("--K-hartree-per-rad2", opt->k, "twisting K per cell (U = K gamma^2 / 2)")
+        ->check(finiteNumber(false));
+    s->add_option("--D-soft-hartree-bohr2", opt->ds, "soft bending D_s per cell (U = D (1/R)^2 / 2)")
+        ->check(finiteNumber(false));
+    s->add_option("--D-hard-hartree-bohr2", opt->dh, "hard bending D_h per cell")->check(finiteNumber(false));
+    s->add_option("--T0-bohr", opt->t0, "cell length T0")->check(finiteNumber(false));
+    s->add_option("--atoms-per-cell", opt->atoms, "carbon atoms per cell (mass)")
+        ->check(integerIn(1, beam::kMaxAtomsPerCell));
+    s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml")
+        ->check(nonEmptyPath());
+    s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)")
+        ->check(integerIn(2, 1000000));
     CLI::App* p = s->add_subcommand(
         "plate", "N-layer bending rigidities (bend scans or given) against the bonded plate and sliding layers");
     *plateSub = p;
     p->add_option("file", plate->file, "plate file (.toml, docs/beam.md)")->required();
-    p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots");
-    p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime (default 0.02)");
+    p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots")
+        ->check(nonEmptyPath());
+    p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime (default 0.02)")
+        ->check(finiteNumber(false, 1.0));
     p->add_flag("--measured-curvature", plate->measuredCurvature, "fit bends against the measured curvature");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
@@ -175,6 +190,7 @@ Command makeBeamCommand() {
     in.measuredCurvature = opt->measuredCurvature;
     if (opt->bricks < 2) throw InputError(cl, "--bricks", std::to_string(opt->bricks), "at least 2");
 
+    prepareOutputFolder(opt->outputDir, cl, "option --output-dir");
     beam::BeamRun run = beam::runBeam(in);
     fs::create_directories(opt->outputDir);
     const fs::path dir(opt->outputDir);
@@ -185,8 +201,15 @@ Command makeBeamCommand() {
         "T0 = {:.6g} Bohr, {} cells per brick. Parameters with units: beam.json.",
         run.beam.closure, run.beam.shape, run.beam.young * beam::si::kHartreePerBohr3InMPa * 1e-3,
         run.beam.shear * beam::si::kHartreePerBohr3InMPa * 1e-3, run.beam.cellLength, run.brick.cellsPerBrick);
-    writeFile(dir / ex.modelFile, beam::mdemModelToml(run.brick, ex, header));
-    writeFile(dir / "cantilever.toml", beam::cantileverSceneToml(run.brick, ex));
+    // Every number checked before any file is written (an overflow such as C_eV = 1e308 ends
+    // here, naming the entry, with no output that looks valid).
+    const std::string model = beam::mdemModelToml(run.brick, ex, header);
+    const std::string scene = beam::cantileverSceneToml(run.brick, ex);
+    requireFiniteJson(run.report, (dir / "beam.json").string());
+    requireFiniteToml(model, (dir / ex.modelFile).string());
+    requireFiniteToml(scene, (dir / "cantilever.toml").string());
+    writeFile(dir / ex.modelFile, model);
+    writeFile(dir / "cantilever.toml", scene);
     run.report["files"] = {{"model", (dir / ex.modelFile).string()}, {"scene", (dir / "cantilever.toml").string()}};
     // One PNG per fitted curve: fit-stretch.png, fit-twist.png, fit-bend-soft.png, fit-bend-hard.png.
     std::vector<std::string> plots;

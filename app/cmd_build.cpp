@@ -3,8 +3,10 @@
 // translational cell), of concentric walls sharing one translational period, or of a bent
 // AB-stacked graphene stack (one sector of a ring); atoms inline, symmetry, k-points, task.
 #include <algorithm>
+#include <charconv>
+#include <optional>
+#include <utility>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -13,7 +15,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "common/electronic_temperature.hpp"
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/cell_file.hpp"
@@ -52,13 +57,30 @@ struct RingOptions {
 };
 
 void addCommonOptions(CLI::App* s, CommonOptions& o, const std::string& defaultName) {
-  s->add_option("--bond", o.bond, "C-C bond length of the flat sheet, Å");
-  s->add_option("--kpoints", o.kpoints, "helical k-points (default: from the cell length)");
-  s->add_option("--temperature", o.kelvin, "electronic temperature, K");
+  s->add_option("--bond", o.bond, "C-C bond length of the flat sheet, Å")->check(finiteNumber(false));
+  s->add_option("--kpoints", o.kpoints, "helical k-points (default: from the cell length)")
+      ->check(integerIn(1, 1000000, "the limit of [kpoints] helical"));
+  s->add_option("--temperature", o.kelvin, "electronic temperature, K")->check(finiteNumber(false));
   s->add_option("--set", o.set, "parameter set folder under params/");
   s->add_option("--task", o.task, "energy | forces | relax")
       ->check(CLI::IsMember({"energy", "forces", "relax"}));
-  s->add_option("-o,--output", o.output, "cell file to write (default " + defaultName + ")");
+  s->add_option("-o,--output", o.output, "cell file to write (default " + defaultName + ")")
+      ->check(nonEmptyPath());
+}
+
+// "n,m" -> (n, m) with 1 <= n <= 10000 and 0 <= m <= 10000 (the limits of the cell file's
+// builder); nullopt when the text is not two integers in range (read as 64-bit, no wrapping).
+std::optional<std::pair<int, int>> chiralPair(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  long long n = 0, m = 0;
+  const char* end = text.data() + text.size();
+  const auto a = std::from_chars(text.data(), text.data() + comma, n);
+  const auto b = std::from_chars(text.data() + comma + 1, end, m);
+  if (a.ec != std::errc() || a.ptr != text.data() + comma || b.ec != std::errc() || b.ptr != end)
+    return std::nullopt;
+  if (n < 1 || n > 10000 || m < 0 || m > 10000) return std::nullopt;
+  return std::make_pair(static_cast<int>(n), static_cast<int>(m));
 }
 
 // Completes the cell input around `cell` and writes it; `what` describes the structure.
@@ -68,6 +90,13 @@ int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std:
   in.cell = std::move(cell);
   const std::string path = o.output.empty() ? defaultPath : o.output;
   in.source = path;
+  const std::string cl = "<command line>";
+  requireElectronicTemperature(o.kelvin * units::kBoltzmannHartreePerKelvin, cl,
+                               "option --temperature");
+  // A built structure passes the check of a read one (--bond too short, walls too close).
+  in.cell.validate(cl + " (the structure built from the options)",
+                   objective::kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
+  requireWritableOutput(path, cl, "option --output");
   // Unless asked otherwise: kappa points that sample a 300 Å length of tube (N T = 300 Å),
   // which converges metallic tubes at 300 K to about 1e-8 Ha/atom (mesochain bench kpoints).
   const double t = in.cell.symmetry.translation();
@@ -99,11 +128,11 @@ int buildMultiWall(const MultiWallOptions& w, const CommonOptions& o) {
   std::vector<std::pair<int, int>> walls;
   std::string name = "mw", what;
   for (const std::string& s : w.walls) {
-    int n = 0, m = 0;
-    char comma = 0, rest = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &n, &comma, &m, &rest) != 3 || comma != ',')
+    const auto nm = chiralPair(s);
+    if (!nm)
       throw InputError("<command line>", "build multiwall, wall '" + s + "'", "'" + s + "'",
-                       "chiral indices written n,m (e.g. 5,5)");
+                       "chiral indices written n,m (e.g. 5,5) with 1 <= n <= 10000, 0 <= m <= 10000");
+    const auto [n, m] = *nm;
     walls.emplace_back(n, m);
     name += fmt::format("{}{}-{}", walls.size() > 1 ? "_" : "", n, m);
     what += fmt::format("{}({},{})", walls.size() > 1 ? "@" : "", n, m);
@@ -117,13 +146,15 @@ int buildRing(const RingOptions& r, const CommonOptions& o) {
       r.direction == "armchair" ? objective::Direction::Armchair : objective::Direction::Zigzag);
   std::string name = r.direction;
   if (r.direction == "chiral") {
-    char comma = 0, rest = 0;
     if (r.chiral.empty())
       throw InputError("<command line>", "build graphene-ring --chiral", "nothing",
                        "--chiral n,m with --direction chiral (e.g. 2,1)");
-    if (std::sscanf(r.chiral.c_str(), "%d%c%d%c", &dir.n, &comma, &dir.m, &rest) != 3 || comma != ',')
+    const auto nm = chiralPair(r.chiral);
+    if (!nm)
       throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",
-                       "chiral indices written n,m (e.g. 2,1)");
+                       "chiral indices written n,m (e.g. 2,1) with 1 <= n <= 10000, 0 <= m <= 10000");
+    dir.n = nm->first;
+    dir.m = nm->second;
     name = fmt::format("{}-{}", dir.n, dir.m);
   } else if (!r.chiral.empty()) {
     throw InputError("<command line>", "build graphene-ring --chiral", "'" + r.chiral + "'",
@@ -152,8 +183,8 @@ Command makeBuildCommand() {
     auto* b = app.add_subcommand("build", "write an objective-cell file of a structure");
     b->require_subcommand(1);
     auto* s = b->add_subcommand("cnt", "an (n,m) carbon nanotube");
-    s->add_option("n", cnt->n, "chiral index n")->required();
-    s->add_option("m", cnt->m, "chiral index m")->required();
+    s->add_option("n", cnt->n, "chiral index n")->required()->check(integerIn(1, 10000));
+    s->add_option("m", cnt->m, "chiral index m")->required()->check(integerIn(0, 10000));
     s->add_option("--cell", cnt->cell, "helical (2 atoms + symmetry) or translational")
         ->check(CLI::IsMember({"helical", "translational"}));
     addCommonOptions(s, *common, "cntNM.toml");
@@ -166,14 +197,17 @@ Command makeBuildCommand() {
     subs->mw = w;
 
     auto* g = b->add_subcommand("graphene-ring", "AB-stacked graphene layers bent into a ring (one sector)");
-    g->add_option("layers", ring->layers, "number of graphene layers")->required();
+    g->add_option("layers", ring->layers, "number of graphene layers")->required()->check(integerIn(1, 1000));
     g->add_option("--direction", ring->direction, "sheet direction along the arc")
         ->required()
         ->check(CLI::IsMember({"armchair", "zigzag", "chiral"}));
     g->add_option("--chiral", ring->chiral, "with --direction chiral: indices n,m of the arc direction (0 <= m <= n)");
-    g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")->required();
-    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector (default 1)");
-    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)");
+    g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")
+        ->required()
+        ->check(integerIn(3, 10000000, "as rotation_order of the cell file"));
+    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector (default 1)")
+        ->check(integerIn(1, 1000));
+    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)")->check(finiteNumber(false));
     addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
     subs->ring = g;
   };

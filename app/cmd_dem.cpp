@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "common/errors.hpp"
 #include "mdem/run.hpp"
@@ -42,7 +43,8 @@ Command makeDemCommand() {
     *sub = app.add_subcommand("dem", "run a mesoscopic distinct element (mDEM) scene");
     (*sub)->add_option("scene", opt->scene, "scene file (TOML, format = 1)")->required();
     (*sub)->add_option("-o,--output-dir", opt->outputDir,
-                       "folder for the outputs (default: output.directory of the scene)");
+                       "folder for the outputs (default: output.directory of the scene)")
+        ->check(nonEmptyPath());
     (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
     (*sub)->add_flag("--resume", opt->resume,
                      "continue the interrupted run from the checkpoint in the output folder (bit for bit)");
@@ -53,6 +55,9 @@ Command makeDemCommand() {
   c.run = [opt] {
     const mdem::Scene scene = mdem::loadScene(opt->scene);
     const std::string dir = opt->outputDir.empty() ? scene.output.directory : opt->outputDir;
+    // Made and checked before the run, not found unwritable at the first output.
+    prepareOutputFolder(dir, opt->outputDir.empty() ? opt->scene : "<command line>",
+                        opt->outputDir.empty() ? "key output.directory" : "option --output-dir");
     std::function<void(double)> progress;
     if (!opt->quiet) progress = drawProgress;
     if (opt->resume && opt->overwrite)

@@ -10,8 +10,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "app/run_report.hpp"
+#include "common/atomic_file.hpp"
+#include "common/finite_output.hpp"
 #include "common/errors.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
@@ -94,6 +97,26 @@ void writeStructures(const std::string& prefix, const objective::ObjectiveCell& 
 
 int runCell(const RunOptions& o) {
   const objective::CellInput in = objective::readCellFile(o.cellFile);
+  // Every output is checked before the computation: a relaxation is not lost to a bad path.
+  const std::string cl = "<command line>";
+  if (!o.json.empty()) requireWritableOutput(o.json, cl, "option --json");
+  if (!o.plot.empty()) requireWritableOutput(o.plot, cl, "option --plot");
+  const std::string prefix = !o.structure.empty() ? o.structure
+                             : in.task.type == "relax"
+                                 ? std::filesystem::path(o.cellFile).stem().string() + "-relaxed"
+                                 : std::string();
+  if (!prefix.empty()) requireWritableOutput(prefix + ".xyz", cl, "option --structure");
+  if (o.unroll > 0 && !prefix.empty()) {
+    const long long atoms = objective::unrolledAtomCount(in.cell, 0, o.unroll - 1);
+    if (atoms > objective::kMaxUnrolledAtoms)
+      throw InputError(cl, "option --unroll",
+                       fmt::format("{} screw steps: {} atoms (about {:.3g} GB)", o.unroll, atoms,
+                                   atoms * 60e-9),
+                       fmt::format("at most {} unrolled atoms ({} steps of this cell)",
+                                   objective::kMaxUnrolledAtoms,
+                                   objective::kMaxUnrolledAtoms /
+                                       (in.cell.atomCount() * in.cell.symmetry.rotationOrder())));
+  }
   if (!o.plot.empty() && in.task.type != "relax")
     throw InputError("<command line>", "option --plot", "task " + in.task.type + " in " + o.cellFile,
                      "a cell file with task relax (the plot shows the relaxation history)");
@@ -127,14 +150,11 @@ int runCell(const RunOptions& o) {
   }
   printSummary(std::cout, in, cell, result, relax.get());
   if (!o.json.empty()) {
-    std::ofstream f(o.json);
-    if (!f) throw InputError(o.json, "cannot open the JSON output file for writing");
-    f << resultJson(in, cell, result, relax.get()).dump(2) << "\n";
+    const nlohmann::json j = resultJson(in, cell, result, relax.get());
+    requireFiniteJson(j, o.json);
+    writeFileAtomically(o.json, j.dump(2) + "\n");
     std::cerr << "wrote " << o.json << "\n";
   }
-  std::string prefix = o.structure;
-  if (prefix.empty() && relax)
-    prefix = std::filesystem::path(o.cellFile).stem().string() + "-relaxed";
   if (!prefix.empty()) writeStructures(prefix, cell, result, o.unroll);
   if (relax && !relax->converged) {
     std::cerr << "mesochain: warning: relaxation did not converge within the step limit\n";
@@ -151,12 +171,13 @@ Command makeRunCommand() {
   c.attach = [opts, sub](CLI::App& app) {
     auto* s = app.add_subcommand("run", "energy, forces or relaxation of an objective cell");
     s->add_option("cell", opts->cellFile, "objective-cell input file (TOML)")->required();
-    s->add_option("--json", opts->json, "write the results JSON here");
+    s->add_option("--json", opts->json, "write the results JSON here")->check(nonEmptyPath());
     s->add_option("--structure", opts->structure,
                   "write the final cell as PREFIX.xyz and PREFIX.gen (default for relax: "
                   "<cell>-relaxed)");
     s->add_option("--unroll", opts->unroll,
-                  "also write PREFIX-unrolled.xyz with this many screw steps of images");
+                  "also write PREFIX-unrolled.xyz with this many screw steps of images")
+        ->check(integerIn(1, 1000000000));
     s->add_option("--plot", opts->plot,
                   "task relax: write the relaxation history (max force, energy change) as PNG");
     *sub = s;

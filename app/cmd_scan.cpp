@@ -10,10 +10,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
 #include "beam/scan_table.hpp"
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/plot/figure.hpp"
 #include "common/units.hpp"
@@ -109,6 +111,14 @@ int runScanCommand(const ScanOptions& o) {
   objective::ScanInput in = objective::readScanFile(o.scanFile);
   in.settings.resume = o.resume;
   in.settings.stopAfter = o.stopAfter;
+  // Every output is checked before the first point is computed.
+  requireWritableOutput(in.jsonPath, o.scanFile, "key output.json");
+  if (!in.csvPath.empty()) requireWritableOutput(in.csvPath, o.scanFile, "key output.csv");
+  if (!in.settings.checkpointPath.empty())
+    requireWritableOutput(in.settings.checkpointPath, o.scanFile, "key output.checkpoint");
+  if (!in.structurePrefix.empty())
+    requireWritableOutput(in.structurePrefix + "-000.xyz", o.scanFile, "key output.structures");
+  if (!o.png.empty()) requireWritableOutput(o.png, "<command line>", "option --png");
   std::error_code ec;
   if (!o.resume && !in.settings.checkpointPath.empty() &&
       std::filesystem::exists(in.settings.checkpointPath, ec))
@@ -156,9 +166,11 @@ Command makeScanCommand() {
     s->add_flag("--resume", opts->resume,
                 "continue from the checkpoint of the scan file (refused if the input changed)");
     s->add_option("--stop-after", opts->stopAfter,
-                  "compute at most N new points, then stop (resume later with --resume)");
+                  "compute at most N new points, then stop (resume later with --resume)")
+        ->check(integerIn(0, 1000000000));
     s->add_option("--png", opts->png,
-                  "PNG of the finished curve with its fit (default: the curve JSON with .png)");
+                  "PNG of the finished curve with its fit (default: the curve JSON with .png)")
+        ->check(nonEmptyPath());
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

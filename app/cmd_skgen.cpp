@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "skgen/skgen_job.hpp"
 
@@ -37,13 +38,17 @@ Command makeSkgenCommand() {
   c.attach = [sub, opt](CLI::App& app) {
     *sub = app.add_subcommand("skgen", "generate Slater-Koster tables (.skf) from confined atoms");
     (*sub)->add_option("elements", opt->input, "elements file (TOML, docs/skgen.md)")->required();
-    (*sub)->add_option("-o,--output-dir", opt->outputDir, "folder for the .skf files (default: output_dir of the file)");
+    (*sub)->add_option("-o,--output-dir", opt->outputDir, "folder for the .skf files (default: output_dir of the file)")
+        ->check(nonEmptyPath());
     (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
     skgen::SkgenJob job = skgen::readSkgenJob(opt->input);
     if (!opt->outputDir.empty()) job.outputDir = opt->outputDir;
+    // The output folder is made and checked before the (long) generation.
+    prepareOutputFolder(job.outputDir, opt->outputDir.empty() ? opt->input : "<command line>",
+                        opt->outputDir.empty() ? "key output_dir" : "option --output-dir");
     std::function<void(double, const std::string&)> progress;
     if (!opt->quiet) progress = drawSkgenProgress;
     const skgen::SkgenOutput out = skgen::runSkgen(job, progress);

@@ -360,8 +360,10 @@ void readConstantsFile(const std::string& path, BeamInputs& in) {
     auto positive = [&] {
       if (!(x > 0.0)) throw InputError(path, where, fmt::format("{:.6g}", x), "a value > 0");
     };
-    auto integer = [&] {
-      if (x != std::floor(x) || x < 1) throw InputError(path, where, fmt::format("{:.6g}", x), "an integer >= 1");
+    auto integer = [&](long long limit) {
+      if (x != std::floor(x) || x < 1 || x > static_cast<double>(limit))
+        throw InputError(path, where, fmt::format("{:.6g}", x),
+                         fmt::format("an integer from 1 to {}", limit));
     };
     switch (key.slot) {
       case 15:
@@ -369,9 +371,9 @@ void readConstantsFile(const std::string& path, BeamInputs& in) {
         format = true;
         break;
       case 10: positive(), in.cellLength = x; break;
-      case 11: integer(), in.atomsPerCell = static_cast<int>(x); break;
+      case 11: integer(kMaxAtomsPerCell), in.atomsPerCell = static_cast<int>(x); break;
       case 12: positive(), in.cellMass = x; break;
-      case 13: integer(), in.cellsPerBrick = static_cast<int>(x); break;
+      case 13: integer(kMaxCellsPerBrick), in.cellsPerBrick = static_cast<int>(x); break;
       case 14: positive(), in.thickness = x; break;
       default: positive(), *target[key.slot] = GivenConstant{x, 0.0, path};
     }

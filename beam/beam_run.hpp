@@ -22,6 +22,11 @@ struct GivenConstant {
   std::string source;
 };
 
+// Integer limits of the inputs (int fields; larger values would wrap): a brick of 1e7 cells is
+// ~1 mm of tube, far beyond a DEM element; 1e8 atoms per cell exceeds any DFTB cell.
+inline constexpr long long kMaxCellsPerBrick = 10'000'000;
+inline constexpr long long kMaxAtomsPerCell = 100'000'000;
+
 struct BeamInputs {
   std::vector<ScanCurve> curves;
   // Constants given directly (atomic units), keyed "C", "K", "D_s", "D_h".

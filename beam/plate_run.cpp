@@ -194,9 +194,10 @@ void readPlateFile(const std::string& path, PlateInputs& in) {
       once(d1, key, v);
       in.singleLayer = GivenConstant{number(key, v) * (key.ends_with("eV") ? ev : 1.0), 0.0, path};
     } else if (key == "max_layers") {
-      in.maxLayers = static_cast<int>(number(key, v));
-      if (in.maxLayers < 1 || in.maxLayers > 1000)
-        throw InputError(path, where(key, v), fmt::format("{}", in.maxLayers), "1 <= max_layers <= 1000");
+      const double n = number(key, v);  // checked before narrowing (3e9 would wrap)
+      if (!(n >= 1 && n <= 1000) || n != std::floor(n))
+        throw InputError(path, where(key, v), fmt::format("{}", n), "an integer 1 <= max_layers <= 1000");
+      in.maxLayers = static_cast<int>(n);
     } else if (key == "stack") {
       if (!v.is_array()) throw InputError(path, where(key, v), "a " + toml::stringize(v.type()), "[[stack]] tables");
       for (const toml::value& t : v.as_array()) {
@@ -208,7 +209,8 @@ void readPlateFile(const std::string& path, PlateInputs& in) {
         for (const auto& [k, x] : t.as_table()) {
           if (k == "layers") {
             const double n = number(k, x);
-            if (n != std::floor(n) || n < 1) throw InputError(path, where(k, x), fmt::format("{}", n), "an integer >= 1");
+            if (n != std::floor(n) || !(n >= 1 && n <= 1000))
+              throw InputError(path, where(k, x), fmt::format("{}", n), "an integer from 1 to 1000");
             s.layers = static_cast<int>(n), hasLayers = true;
           } else if (k == "scan") {
             if (!x.is_string()) throw InputError(path, where(k, x), "a " + toml::stringize(x.type()), "a file name");

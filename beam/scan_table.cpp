@@ -7,11 +7,18 @@
 #include <map>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
 
 namespace mesochain::beam {
+
+namespace {
+// As beam::kMaxAtomsPerCell: atoms_per_cell is an int.
+constexpr double kMaxTableAtomsPerCell = 1e8;
+}  // namespace
+
 
 namespace {
 
@@ -110,7 +117,9 @@ ScanCurve parseScanJson(const std::string& text, const std::string& source) {
   c.deformationUnit = jsonString(j, "deformation_unit", source, true);
   c.cellLength = jsonNumber(j, "T0_bohr", source, "key ");
   const double atoms = jsonNumber(j, "atoms_per_cell", source, "key ");
-  if (atoms != std::floor(atoms)) throw InputError(source, "key atoms_per_cell", std::to_string(atoms), "an integer");
+  if (atoms != std::floor(atoms) || !(atoms >= 1 && atoms <= kMaxTableAtomsPerCell))
+    throw InputError(source, "key atoms_per_cell", fmt::format("{}", atoms),
+                     fmt::format("an integer from 1 to {:.0f}", kMaxTableAtomsPerCell));
   c.atomsPerCell = static_cast<int>(atoms);
   if (j.contains("thickness_bohr") && !j.at("thickness_bohr").is_null())
     c.thickness = jsonNumber(j, "thickness_bohr", source, "key ");
@@ -202,7 +211,9 @@ ScanCurve parseScanCsv(const std::string& text, const std::string& source) {
   if (get("atoms_per_cell").empty())
     throw InputError(source, "header atoms_per_cell", "nothing", "# atoms_per_cell = <integer>");
   const double atoms = csvNumber(get("atoms_per_cell"), source, "header atoms_per_cell");
-  if (atoms != std::floor(atoms)) throw InputError(source, "header atoms_per_cell", get("atoms_per_cell"), "an integer");
+  if (atoms != std::floor(atoms) || !(atoms >= 1 && atoms <= kMaxTableAtomsPerCell))
+    throw InputError(source, "header atoms_per_cell", get("atoms_per_cell"),
+                     fmt::format("an integer from 1 to {:.0f}", kMaxTableAtomsPerCell));
   c.atomsPerCell = static_cast<int>(atoms);
   if (!get("thickness_bohr").empty()) c.thickness = csvNumber(get("thickness_bohr"), source, "header thickness_bohr");
   if (!get("width_bohr").empty()) c.width = csvNumber(get("width_bohr"), source, "header width_bohr");

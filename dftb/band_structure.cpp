@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/electronic_temperature.hpp"
 #include "common/errors.hpp"
 #include "dftb/band_solver.hpp"
 #include "dftb/bloch.hpp"
@@ -18,9 +19,8 @@ using Clock = std::chrono::steady_clock;
 BandStructureTerm::BandStructureTerm(std::shared_ptr<const ParameterSet> params,
                                      BandSettings settings)
     : params_(std::move(params)), settings_(settings) {
-  if (!(settings_.electronicTemperature > 0.0))
-    throw InputError("<electrons>", "electrons.temperature",
-                     std::to_string(settings_.electronicTemperature), "a positive temperature");
+  requireElectronicTemperature(settings_.electronicTemperature, "the calculator settings",
+                               "band.electronic_temperature_hartree");
 }
 
 void reportBandSolution(const BandGeometry& geo, const BandSolution& sol, double kT,

@@ -1,7 +1,12 @@
 #include "dftb/calculator.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "common/errors.hpp"
 #include "dftb/dispersion_ewald.hpp"
@@ -40,6 +45,27 @@ std::vector<std::string> Calculator::termNames() const {
   return names;
 }
 
+namespace {
+// The band term holds at least three complex N_o x N_o matrices (Hamiltonian, overlap,
+// eigenvectors) of a k-point at a time: 48 N_o^2 bytes. A cell whose estimate exceeds the
+// machine's memory is refused before the first allocation (a bare std::bad_alloc otherwise).
+void requireBandMemory(const objective::ObjectiveCell& cell, const ParameterSet& params,
+                       int kpoints) {
+  double orbitals = 0;
+  for (int a = 0; a < cell.atomCount(); ++a)
+    orbitals += params.species(cell.species[a]).orbitalCount;
+  const double bytes = 48.0 * orbitals * orbitals;
+  const double memory = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) *
+                        static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+  if (memory > 0 && bytes > memory)
+    throw InputError("<calculator>", "the cell's atoms",
+                     fmt::format("{} atoms with {:.0f} orbitals: at least {:.3g} GB for the "
+                                 "Hamiltonian, overlap and eigenvectors of one of the {} k-points",
+                                 cell.atomCount(), orbitals, bytes * 1e-9, kpoints),
+                     fmt::format("a cell that fits the {:.3g} GB of this machine", memory * 1e-9));
+}
+}  // namespace
+
 Result Calculator::evaluate(const objective::ObjectiveCell& cell,
                             const EvaluationRequest& request) const {
   for (size_t s = 0; s < cell.speciesNames.size(); ++s)
@@ -48,6 +74,7 @@ Result Calculator::evaluate(const objective::ObjectiveCell& cell,
       throw InputError("<calculator>", "species " + cell.speciesNames[s],
                        "a species order that differs from the parameter set",
                        "the parameter set loaded for this cell's species");
+  requireBandMemory(cell, *params_, settings_.band.helicalKPoints);
   Result r;
   r.atoms = cell.atomCount();
   if (request.gradient) r.gradient = Eigen::Matrix3Xd::Zero(3, cell.atomCount());
@@ -76,6 +103,18 @@ Result Calculator::evaluate(const objective::ObjectiveCell& cell,
   r.totalEnergy = r.bandEnergy + r.scc + r.repulsive + r.dispersion;
   r.freeEnergy = r.totalEnergy - r.entropyTerm;
   r.extrapolatedEnergy = r.totalEnergy - 0.5 * r.entropyTerm;
+  // A non-finite energy or force is never a result (it would be written as null, exit 0).
+  const std::pair<const char*, double> parts[] = {
+      {"band energy", r.bandEnergy}, {"entropy term", r.entropyTerm}, {"SCC energy", r.scc},
+      {"repulsive energy", r.repulsive}, {"dispersion energy", r.dispersion},
+      {"dF/dT", r.dFdTranslation}, {"dF/dtwist", r.dFdTwist}};
+  for (const auto& [name, value] : parts)
+    if (!std::isfinite(value))
+      throw NumericalError(fmt::format("the calculator gave a non-finite {} ({}) for a cell of {} "
+                                       "atoms", name, value, cell.atomCount()));
+  if (r.gradient.size() && !r.gradient.allFinite())
+    throw NumericalError(fmt::format("the calculator gave non-finite forces for a cell of {} atoms",
+                                     cell.atomCount()));
   if (settings_.dispersion.enabled && !settings_.dispersion.ewald && !cell.symmetry.isRing()) {
     // Truncation estimate of the r^-6 tail beyond the cutoff for a line of atoms with density
     // lambda = N_o N_a / T: E_tail = -(2/5) N_o lambda eps r0^6 / r_c^5 per cell.

@@ -6,7 +6,9 @@
 #include <limits>
 #include <vector>
 
+#include "common/electronic_temperature.hpp"
 #include "common/errors.hpp"
+#include "dftb/fermi.hpp"
 #include "dftb/band_solver.hpp"
 #include "dftb/bloch.hpp"
 #include "dftb/charge_mixer.hpp"
@@ -52,9 +54,8 @@ SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> p
                                            BandSettings band, SccSettings scc,
                                            std::shared_ptr<ChargeCache> cache)
     : params_(std::move(params)), band_(band), scc_(std::move(scc)), cache_(std::move(cache)) {
-  if (!(band_.electronicTemperature > 0.0))
-    throw InputError("<electrons>", "electrons.temperature",
-                     std::to_string(band_.electronicTemperature), "a positive temperature");
+  requireElectronicTemperature(band_.electronicTemperature, "the calculator settings",
+                               "band.electronic_temperature_hartree");
   // Mulliken populations carry rounding errors of a few 1e-15 per electron; a tolerance below
   // 1e-13 electrons cannot be certified in double precision.
   if (!(scc_.chargeTolerance >= 1e-13))

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common/errors.hpp"
 #include "dftb/skf_tokens.hpp"
 
@@ -63,7 +65,11 @@ std::string trimmed(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-void readGridLine(LineReader& reader, SkfTable& t) {
+// At most this many grid points (published tables have 500-1000): each row holds 40 doubles,
+// 320 bytes, so 1e6 rows are 0.32 GB; more is a garbled nGrid, refused before any allocation.
+constexpr int kMaxSkfGridPoints = 1000000;
+
+int readGridLine(LineReader& reader, SkfTable& t) {
   const SkfLine line = reader.next("the grid line 'gridDist nGrid'");
   const std::vector<double> v = parseSkfNumbers(line);
   // DFTB+ reads two values and ignores the rest (published tables have a third, e.g. "500,1").
@@ -79,6 +85,33 @@ void readGridLine(LineReader& reader, SkfTable& t) {
     skfError(line, "nGrid = " + std::to_string(t.declaredPoints),
              "at least 2 grid points (DFTB+ reads nGrid - 1 table rows)");
   }
+  if (t.declaredPoints > kMaxSkfGridPoints) {
+    skfError(line,
+             fmt::format("nGrid = {} (about {:.3g} GB of integral tables)", t.declaredPoints,
+                         320e-9 * t.declaredPoints),
+             fmt::format("at most {} grid points (published tables have 500-1000)",
+                         kMaxSkfGridPoints));
+  }
+  return line.number;
+}
+
+// The integral table must reach beyond the repulsive potential: in every DFTB table the H and S
+// integrals (tails of atomic orbitals) extend further than the short-ranged repulsion (params/:
+// 10.4 Bohr of table, repulsion to 2.1-4.2 Bohr). A grid spacing mistyped as 0.002 for 0.02
+// would leave atoms beyond 1 Bohr without any integral, i.e. not interacting.
+void checkGridCoversRepulsion(const SkfTable& t, int gridLine) {
+  const double extent = t.gridSpacing * (t.declaredPoints - 1);  // DFTB+: rows at dr .. (n-1) dr
+  const bool spline = t.spline.has_value();
+  const double cutoff = spline ? t.spline->cutoff() : t.polynomial.cutoff;
+  if (cutoff > extent)
+    throw InputError(
+        t.path, "line " + std::to_string(gridLine) + " (the grid line 'gridDist nGrid')",
+        fmt::format("an integral table to {:.6g} Bohr (gridDist {:.6g} x {} rows), shorter than "
+                    "the repulsive potential, which reaches {:.6g} Bohr ({})",
+                    extent, t.gridSpacing, t.declaredPoints - 1, cutoff,
+                    spline ? "line " + std::to_string(t.splineLine) + ", the Spline block"
+                           : std::string("rcut of the polynomial")),
+        "a grid that reaches beyond the repulsion (is gridDist or nGrid mistyped?)");
 }
 
 void readAtomicLine(LineReader& reader, SkfTable& t) {
@@ -190,11 +223,12 @@ SkfTable readSkfFile(const std::string& path, bool homonuclear) {
     t.extended = !first.text.empty() && first.text[0] == '@';
   }
   if (t.extended) reader.next("the grid line");
-  readGridLine(reader, t);
+  const int gridLine = readGridLine(reader, t);
   if (homonuclear) readAtomicLine(reader, t);
   readMassLine(reader, t);
   readTable(reader, t);
   readSpline(reader, t);
+  checkGridCoversRepulsion(t, gridLine);
   return t;
 }
 

@@ -112,6 +112,9 @@ int parseSkfInteger(const SkfLine& line, int position, const std::string& what) 
   const std::string& tok = t[static_cast<std::size_t>(position)];
   int n = 0;
   const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), n);
+  if (ec == std::errc::result_out_of_range && ptr == tok.data() + tok.size()) {
+    skfError(line, quoted(tok), what + " (an integer of at most 2147483647)");
+  }
   if (ec != std::errc() || ptr != tok.data() + tok.size()) {
     skfError(line, quoted(tok), what + " (an integer)");
   }

@@ -1,12 +1,14 @@
 #include "skgen/skf_writer.hpp"
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::skgen {
@@ -15,7 +17,15 @@ namespace {
 // Columns of the simple format in file order (extended indices, dftb/skf_file.hpp).
 constexpr std::array<int, 10> kSimpleColumns = {7, 8, 9, 12, 13, 14, 15, 17, 18, 19};
 
-std::string num(double x) { return fmt::format("{:.16e}", x); }
+// Every number of a table goes through here: a non-finite one (a failed integral) is an error,
+// never "nan" in a file DFTB+ would read.
+std::string num(double x) {
+  if (!std::isfinite(x)) throw NumericalError(fmt::format("a non-finite number ({})", x));
+  return fmt::format("{:.16e}", x);
+}
+
+void writeSkfText(const std::string& path, const dftb::SkfTable& t,
+                  const std::string& documentation);
 }  // namespace
 
 dftb::SplineRepulsiveData zeroRepulsive(double start, double cutoff) {
@@ -41,6 +51,17 @@ void writeSkfFile(const std::string& path, const dftb::SkfTable& t,
     if (t.ham.col(c).cwiseAbs().maxCoeff() > 0.0 || t.over.col(c).cwiseAbs().maxCoeff() > 0.0)
       throw std::invalid_argument("writeSkfFile: f integrals need the extended format (not written)");
 
+  try {
+    writeSkfText(path, t, documentation);
+  } catch (const NumericalError& e) {
+    throw NumericalError(path + ": the Slater-Koster table holds " + e.what() +
+                         "; nothing was written");
+  }
+}
+
+namespace {
+void writeSkfText(const std::string& path, const dftb::SkfTable& t,
+                  const std::string& documentation) {
   std::ostringstream out;
   out << num(t.gridSpacing) << " " << t.rows() + 1 << "\n";
   if (t.homonuclear) {
@@ -70,10 +91,8 @@ void writeSkfFile(const std::string& path, const dftb::SkfTable& t,
   }
   if (!documentation.empty()) out << "\n" << documentation << (documentation.back() == '\n' ? "" : "\n");
 
-  std::ofstream f(path);
-  if (!f) throw InputError(path, "cannot write the Slater-Koster file");
-  f << out.str();
-  if (!f) throw InputError(path, "writing the Slater-Koster file failed");
+  writeFileAtomically(path, out.str());
 }
+}  // namespace
 
 }  // namespace mesochain::skgen

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <toml.hpp>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
 #include "objective/core/toml_table.hpp"
@@ -19,6 +20,11 @@
 #include "skgen/skf_writer.hpp"
 
 namespace mesochain::skgen {
+
+namespace {
+constexpr double kMaxSkgenGridRows = 100000;
+}  // namespace
+
 
 namespace {
 using objective::detail::TomlTable;
@@ -80,9 +86,10 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
       if (sorted[i] - sorted[i - 1] < 1e-3 * sorted[i])
         t.fail("exponents_per_bohr", fmt::format("the exponent {} twice", sorted[i]),
                "distinct exponents (equal ones make the basis linearly dependent)");
-    s.slater.powers = t.has("powers") ? static_cast<int>(t.integer("powers", "an integer 1..6")) : 3;
-    if (s.slater.powers < 1 || s.slater.powers > 6)
-      t.fail("powers", fmt::format("{}", s.slater.powers), "an integer from 1 to 6");
+    // Checked as 64-bit before narrowing (4294967299 would wrap to 3).
+    const long powers = t.has("powers") ? t.integer("powers", "an integer 1..6") : 3;
+    if (powers < 1 || powers > 6) t.fail("powers", fmt::format("{}", powers), "an integer from 1 to 6");
+    s.slater.powers = static_cast<int>(powers);
   } else if (basis == "grid") {
     for (const char* k : {"exponents_per_bohr", "powers"})
       if (t.has(k)) t.fail(k, "a Slater-basis key with basis = \"grid\"", "no exponents or powers for the grid basis");
@@ -144,6 +151,13 @@ SkgenJob readSkgenJob(const std::string& path) {
     if (g.has("spacing_bohr")) job.grid.spacing = g.number("spacing_bohr", "a spacing in bohr");
     if (!(job.grid.spacing > 0.0)) g.fail("spacing_bohr", fmt::format("{}", job.grid.spacing), "a spacing > 0");
     if (g.has("cutoff_bohr")) job.grid.cutoff = g.number("cutoff_bohr", "a distance in bohr");
+    // The rows of every table are cutoff / spacing: at most kMaxSkgenGridRows (each row costs a
+    // two-centre quadrature, and DFTB+ tables have 500-1000).
+    if (job.grid.cutoff / job.grid.spacing > kMaxSkgenGridRows)
+      g.fail("spacing_bohr and cutoff_bohr",
+             fmt::format("{} / {} = {:.4g} grid rows", job.grid.cutoff, job.grid.spacing,
+                         job.grid.cutoff / job.grid.spacing),
+             fmt::format("at most {} rows per table", kMaxSkgenGridRows));
     if (job.grid.cutoff < job.grid.spacing)
       g.fail("cutoff_bohr", fmt::format("{} bohr, shorter than the first grid point ({} bohr)",
                                         job.grid.cutoff, job.grid.spacing),
@@ -239,6 +253,13 @@ SkgenJob readSkgenJob(const std::string& path) {
                                     : (std::filesystem::path(path).parent_path() / curve).string();
       r.cutoff = t.number("cutoff_bohr", "the repulsive cutoff in bohr");
       if (!(r.cutoff > 0.0)) t.fail("cutoff_bohr", fmt::format("{}", r.cutoff), "a cutoff > 0");
+      // The integral table must reach beyond the repulsion (the .skf reader refuses a table
+      // whose grid ends before its repulsive cutoff: dftb/skf_file.cpp).
+      if (r.cutoff > job.grid.cutoff)
+        t.fail("cutoff_bohr",
+               fmt::format("{} bohr, beyond the integral grid ([grid] cutoff_bohr = {} bohr)",
+                           r.cutoff, job.grid.cutoff),
+               "a repulsive cutoff within the integral grid");
       if (t.has("intervals")) {
         const long n = t.integer("intervals", "an integer 1..200");
         if (n < 1 || n > 200) t.fail("intervals", fmt::format("{}", n), "an integer 1..200");
@@ -385,10 +406,7 @@ SkgenOutput runSkgen(const SkgenJob& job,
   std::vector<std::pair<std::string, const ElementBasis*>> elements;
   for (const ElementSettings& e : job.elements) elements.emplace_back(e.symbol, &bases.at(e.symbol));
   output.atomicData = (std::filesystem::path(job.outputDir) / "atomic-data.json").string();
-  std::ofstream json(output.atomicData);
-  if (!json) throw InputError(output.atomicData, "cannot write the atomic data");
-  json << atomicDataJson(job, elements);
-  if (!json) throw InputError(output.atomicData, "writing the atomic data failed");
+  writeFileAtomically(output.atomicData, atomicDataJson(job, elements));
   done = total;
   report("done");
   return output;

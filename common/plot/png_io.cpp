@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::plot {
@@ -67,7 +68,10 @@ bool decodeRows(png_structp png, png_bytepp rows) {
 }  // namespace
 
 void writePng(const std::string& path, const Image& img) {
-  File f(std::fopen(path.c_str(), "wb"));
+  // Encoded into a temporary file beside `path`, renamed over it when complete.
+  AtomicOutputFile out(path);
+  out.stream().close();
+  File f(std::fopen(out.temporaryPath().c_str(), "wb"));
   if (!f) throw InputError(path, "", "a PNG file that cannot be opened for writing", "a writable path");
   ErrorSink sink;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, onError, onWarning);
@@ -75,8 +79,9 @@ void writePng(const std::string& path, const Image& img) {
   const bool ok = info && encode(png, info, f.get(), img);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw InputError(path, std::string("writing the PNG failed: ") + sink.message);
-  if (std::fflush(f.get()) != 0)
+  if (std::fclose(f.release()) != 0)
     throw InputError(path, "", "a PNG file that could not be written completely", "a writable path");
+  out.commit();
 }
 
 Image readPng(const std::string& path) {

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
 #include "objective/core/cell_file_sections.hpp"
@@ -158,6 +159,13 @@ void readDispersion(const TomlTable& root, CellInput& in) {
       positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
   d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;
   d.cutoff = positive("cutoff", kDefaultLjCutoffAngstrom, "Å") * units::kAngstromInBohr;
+  // The image list grows with the cutoff (a 1e6 Å cutoff would list ~1e6 images per atom pair
+  // and exhaust the memory); beyond 1000 Å the neglected tail is below 3e-10 kcal/mol per atom
+  // (pi sigma epsilon r0^6 / r_c^4), and summation = "ewald" gives the exact tail anyway.
+  if (d.cutoff > kMaximumLjCutoffAngstrom * units::kAngstromInBohr)
+    t->fail("cutoff", fmt::format("{} Å", d.cutoff * units::kBohrInAngstrom),
+            fmt::format("a cutoff of at most {} Å (summation = \"ewald\" for the exact tail)",
+                        kMaximumLjCutoffAngstrom));
   if (!(d.cutoff > d.r0))
     t->fail(t->has("cutoff") ? "cutoff" : "r0",
             fmt::format("cutoff {:.4g} Å <= r0 {:.4g} Å", d.cutoff * units::kBohrInAngstrom,
@@ -202,7 +210,7 @@ void readScc(const TomlTable& root, CellInput& in) {
   s.ewaldTolerance = bounded("ewald_tolerance", s.ewaldTolerance, 1e-13, 1e-2,
                              "a tolerance in [1e-13, 1e-2]");
   if (t->has("max_iterations")) {
-    const long n = t->integer("max_iterations", "a positive integer");
+    const long n = t->integer("max_iterations", "1 .. 100000");
     if (n < 1 || n > 100000L) t->fail("max_iterations", std::to_string(n), "1 .. 100000");
     s.maxIterations = static_cast<int>(n);
   }
@@ -236,8 +244,8 @@ void readTask(const TomlTable& root, CellInput& in) {
               "a positive force (Ha/Bohr)");
   }
   if (t->has("max_steps")) {
-    const long n = t->integer("max_steps", "a positive integer");
-    if (n < 1 || n > 100000000L) t->fail("max_steps", std::to_string(n), "a positive integer");
+    const long n = t->integer("max_steps", "an integer from 1 to 100000000");
+    if (n < 1 || n > 100000000L) t->fail("max_steps", std::to_string(n), "an integer from 1 to 100000000");
     task.maxSteps = static_cast<int>(n);
   }
   if (t->has("relax_translation")) {
@@ -267,9 +275,10 @@ CellInput readCellFile(const std::string& path) {
   if (!el) root.missing("electrons", "a table [electrons] with temperature (K)");
   el->allowOnly({"temperature"});
   const double kelvin = el->number("temperature", "a positive temperature (K)");
-  if (!(kelvin > 0.0))
-    el->fail("temperature", fmt::format("{} K", kelvin), "a positive temperature (K)");
   in.electronicTemperature = kelvin * units::kBoltzmannHartreePerKelvin;
+  if (!electronicTemperatureInRange(in.electronicTemperature))
+    el->fail("temperature", describeElectronicTemperature(in.electronicTemperature),
+             electronicTemperatureRange());
 
   readParameters(root, in);
   readDispersion(root, in);

@@ -18,6 +18,8 @@ inline constexpr double kDefaultLjR0Angstrom = 3.80;
 // At 30 Å the neglected r^-6 tail of a graphene-like sheet (0.38 atoms/Å^2) is
 // pi * sigma * epsilon * r0^6 / r_c^4 ~ 3e-4 kcal/mol per atom; see docs/cell-file.md.
 inline constexpr double kDefaultLjCutoffAngstrom = 30.0;
+// The largest cutoff accepted (the image list grows with it; see readDispersion).
+inline constexpr double kMaximumLjCutoffAngstrom = 1000.0;
 // Default C-C bond length of the [builder] table (Å).
 inline constexpr double kDefaultBondLengthAngstrom = 1.42;
 // Defaults of [builder] type = "collapsed" (Å): the graphite interlayer distance and starting

@@ -111,10 +111,10 @@ SymmetryKeys readSymmetryKeys(const TomlTable& s) {
   }
   if (s.has("twist")) k.twist = s.number("twist", "a twist angle (degrees)");
   if (s.has("rotation_order")) {
-    k.rotationOrder = s.integer("rotation_order", "an integer rotation order N_a >= 1");
+    const char* expected = "an integer rotation order N_a from 1 to 1000000000";
+    k.rotationOrder = s.integer("rotation_order", expected);
     if (*k.rotationOrder < 1 || *k.rotationOrder > 1000000000L)
-      s.fail("rotation_order", std::to_string(*k.rotationOrder),
-             "an integer rotation order N_a >= 1");
+      s.fail("rotation_order", std::to_string(*k.rotationOrder), expected);
   }
   return k;
 }
@@ -173,9 +173,9 @@ double readBondLength(const TomlTable& b) {
 
 ObjectiveCell readNanotubeBuilder(const TomlTable& b) {
   b.allowOnly({"type", "n", "m", "cell", "bond_length", "use_rotation"});
-  const long n = b.integer("n", "the chiral index n >= 1");
+  const long n = b.integer("n", "the chiral index 1 <= n <= 10000");
   if (n < 1 || n > 10000) b.fail("n", std::to_string(n), "the chiral index 1 <= n <= 10000");
-  const long m = b.integer("m", "the chiral index m >= 0");
+  const long m = b.integer("m", "the chiral index 0 <= m <= 10000");
   if (m < 0 || m > 10000) b.fail("m", std::to_string(m), "the chiral index 0 <= m <= 10000");
   const std::string kind = b.string("cell", "\"helical\" or \"translational\"");
   if (kind != "helical" && kind != "translational")
@@ -273,14 +273,14 @@ ChiralIndices readSheetDirection(const TomlTable& b) {
 ObjectiveCell readGrapheneRingBuilder(const TomlTable& b) {
   b.allowOnly({"type", "layers", "direction", "chiral", "rotation_order", "cells_along_arc",
                "interlayer", "bond_length"});
-  const long layers = b.integer("layers", "a number of layers >= 1");
+  const long layers = b.integer("layers", "1 <= layers <= 1000");
   if (layers < 1 || layers > 1000) b.fail("layers", std::to_string(layers), "1 <= layers <= 1000");
   const ChiralIndices dir = readSheetDirection(b);
-  const long na = b.integer("rotation_order", "the number of sectors N_a >= 3");
+  const long na = b.integer("rotation_order", "the number of sectors 3 <= N_a <= 1e7");
   if (na < 3 || na > 10000000) b.fail("rotation_order", std::to_string(na), "3 <= N_a <= 1e7");
   long cells = 1;
   if (b.has("cells_along_arc")) {
-    cells = b.integer("cells_along_arc", "a number of cells >= 1");
+    cells = b.integer("cells_along_arc", "a number of cells 1..1000");
     if (cells < 1 || cells > 1000) b.fail("cells_along_arc", std::to_string(cells), "1..1000");
   }
   double interlayer = 3.35;
@@ -347,9 +347,9 @@ void readKPoints(const TomlTable& root, CellInput& in) {
   }
   k->allowOnly({"helical", "angular"});
   if (k->has("helical")) {
-    const long n = k->integer("helical", "a number of helical k-points >= 1");
-    if (n < 1 || n > 1000000)
-      k->fail("helical", std::to_string(n), "a number of helical k-points >= 1");
+    const char* expected = "a number of helical k-points from 1 to 1000000";
+    const long n = k->integer("helical", expected);
+    if (n < 1 || n > 1000000) k->fail("helical", std::to_string(n), expected);
     if (ring && n != 1)
       k->fail("helical", fmt::format("{} for a closed ring (translation 0)", n),
               "helical = 1 or no helical key: a ring has no helical wave number");
@@ -359,7 +359,8 @@ void readKPoints(const TomlTable& root, CellInput& in) {
   }
   if (k->has("angular")) {
     const toml::value& v = k->at("angular");
-    const std::string expected = "\"all\" or a number of sampled angular quantum numbers >= 1";
+    const std::string expected =
+        "\"all\" or a number of sampled angular quantum numbers from 1 to 1000000000";
     if (v.is_string()) {
       if (v.as_string().str != "all") k->fail("angular", describe(v), expected);
       in.angular.samples = 0;

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
+#include "common/electronic_temperature.hpp"
 #include "common/units.hpp"
 #include "objective/core/cell_file.hpp"
 
@@ -43,11 +45,9 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   const ObjectiveCell& cell = in.cell;
   const Symmetry& s = cell.symmetry;
   if (cell.atomCount() == 0) throw InputError(path, "geometry", "no atoms", "at least one atom");
-  if (!(in.electronicTemperature > 0.0))
-    throw InputError(path, "key electrons.temperature", fmt::format("{}", in.electronicTemperature),
-                     "a positive electronic temperature");
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "the file cannot be written");
+  requireElectronicTemperature(in.electronicTemperature, path, "key electrons.temperature");
+  AtomicOutputFile file(path);
+  std::ofstream& out = file.stream();
   out << "# mesochain objective-cell input; keys and units: docs/cell-file.md\n";
   out << "format = 1\n\n[geometry]\nunit = \"angstrom\"\natoms = [\n";
   for (int a = 0; a < cell.atomCount(); ++a) {
@@ -113,7 +113,7 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   if (t.type == "relax")
     out << fmt::format("force_tolerance = {}  # Ha/Bohr\nmax_steps = {}\nrelax_translation = {}\n",
                        real(t.forceTolerance), t.maxSteps, t.relaxTranslation);
-  if (!out) throw InputError(path, "writing the file failed");
+  file.commit();
 }
 
 }  // namespace mesochain::objective

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/text_reader.hpp"
@@ -122,7 +123,7 @@ GenGeometry readGen(std::istream& in, const std::string& source) {
     if (tr < 0.0) r.fail(hline, fmt::format("T = {} Å", tr), "a translation T >= 0 (Å)");
     if (order < 1.0 || order != std::floor(order) || order > 1e9)
       r.fail(hline, fmt::format("rotation order {}", hline.tokens[2]),
-             "an integer rotation order >= 1");
+             "an integer rotation order from 1 to 1000000000");
     const int na = static_cast<int>(order);
     if (tr == 0.0) {
       const double m = twist * na / 360.0;
@@ -192,10 +193,9 @@ void writeGen(std::ostream& out, const ObjectiveCell& cell) {
 }
 
 void writeGenFile(const std::string& path, const ObjectiveCell& cell) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "the file cannot be written");
-  writeGen(out, cell);
-  if (!out) throw InputError(path, "writing the file failed");
+  AtomicOutputFile file(path);
+  writeGen(file.stream(), cell);
+  file.commit();
 }
 
 }  // namespace mesochain::objective

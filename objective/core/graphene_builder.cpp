@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "objective/core/nanotube_builder.hpp"
 
 namespace mesochain::objective {
 
@@ -107,6 +108,18 @@ ObjectiveCell buildGrapheneRingSector(int layers, ChiralIndices dir, int rotatio
   if (layers > 1 && (!std::isfinite(interlayer) || !(interlayer > 0.0)))
     throw InputError(kSource, "interlayer", fmt::format("{}", interlayer),
                      "a positive, finite interlayer distance");
+  {
+    // Atoms of the sector, counted before any is placed: 4 L / d_R per C x T parallelogram
+    // (L = n^2 + nm + m^2, d_R = gcd(2n + m, 2m + n)), per cell along the arc and layer.
+    const long long l = 1LL * dir.n * dir.n + 1LL * dir.n * dir.m + 1LL * dir.m * dir.m;
+    const long long dr = std::gcd(2LL * dir.n + dir.m, 2LL * dir.m + dir.n);
+    const long long atoms = 4 * l / std::max(1LL, dr) * cellsAlongArc * layers;
+    if (atoms > kMaxBuiltAtoms)
+      throw InputError(kSource, "layers, chiral and cells_along_arc",
+                       fmt::format("{} layers x {} cells of direction ({}, {}): {} atoms", layers,
+                                   cellsAlongArc, dir.n, dir.m, atoms),
+                       fmt::format("at most {} atoms per cell", kMaxBuiltAtoms));
+  }
   const SheetLattice lattice = sheetLattice(dir);
   const GrapheneSheetCell sheet = grapheneSheetCell(dir, bondLength);
   const double rMid = rotationOrder * cellsAlongArc * sheet.arcPeriod / (2.0 * kPi);

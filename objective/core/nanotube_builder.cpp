@@ -118,6 +118,16 @@ ObjectiveCell buildNanotubeTranslational(int n, int m, double bondLength, bool u
   const long L = static_cast<long>(n) * n + static_cast<long>(n) * m + static_cast<long>(m) * m;
   const long dr = std::gcd(2L * m + n, 2L * n + m);
   const long na = useRotation ? tube.rotationOrder() : 1;
+  // Checked before any atom is placed (a (10000, 9999) cell has 1.2e9 atoms).
+  const long atoms = tube.translationalAtomCount() / na;
+  if (atoms > kMaxBuiltAtoms)
+    throw InputError(kSource, "nanotube indices",
+                     fmt::format("({}, {}): a translational cell of {} atoms (about {:.3g} GB of "
+                                 "positions alone)",
+                                 n, m, atoms, 24e-9 * static_cast<double>(atoms)),
+                     fmt::format("at most {} atoms per cell (a DFTB Hamiltonian of that many "
+                                 "atoms already needs {:.3g} TB); use the helical cell",
+                                 kMaxBuiltAtoms, 16e-12 * 16.0 * kMaxBuiltAtoms * kMaxBuiltAtoms));
   // Exact membership test: a sheet point has fractional coordinates (U, V) / (6 L) along
   // (C_h, T_vec); U = 3 [i (2n+m) + j (2m+n)] (+ 3 (n+m) for the second atom),
   // V = 3 (m i - n j) d_R (+ (m - n) d_R for the second atom). Keep 0 <= U N_a, V < 6 L.

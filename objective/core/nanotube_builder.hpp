@@ -62,6 +62,10 @@ class NanotubeRollUp {
   Eigen::Vector2d a1_, a2_, ch_;
 };
 
+// The most atoms a builder makes in one cell: far beyond what DFTB can diagonalise (4 orbitals
+// per carbon: a 4e5 x 4e5 complex Hamiltonian, 2.6 TB), so larger requests are typing errors.
+inline constexpr long kMaxBuiltAtoms = 100'000;
+
 // The minimal objective cell: 2 atoms, screw (T, gamma), rotation order gcd(n, m).
 ObjectiveCell buildNanotubeHelical(int n, int m, double bondLength);
 // The translational unit cell (gamma = 0, N_a = 1) with 4 (n^2+nm+m^2)/d_R atoms; with

@@ -120,8 +120,9 @@ long TextReader::integer(const TextLine& line, std::size_t index, const std::str
 }
 
 long TextReader::atomCount(const TextLine& line, std::size_t index) const {
-  const long n = integer(line, index, "a positive number of atoms");
-  if (n < 1 || n > 100000000L) fail(line, std::to_string(n) + " atoms", "a positive number of atoms");
+  const long n = integer(line, index, "a number of atoms from 1 to 100000000");
+  if (n < 1 || n > 100000000L)
+    fail(line, std::to_string(n) + " atoms", "a number of atoms from 1 to 100000000");
   return n;
 }
 

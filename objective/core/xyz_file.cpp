@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <istream>
 #include <map>
@@ -9,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/text_reader.hpp"
@@ -196,7 +198,8 @@ XyzFrame readXyz(std::istream& in, const std::string& source) {
   // Symmetry and energy from the comment line.
   const char* keys[3] = {"mesochain:translation", "mesochain:twist", "mesochain:rotation_order"};
   int found = 0;
-  for (const auto& [key, value] : kv) {
+  for (const auto& entry : kv) {
+    const std::string& key = entry.first;  // (clang 14 cannot capture a structured binding)
     if (key.rfind("mesochain:", 0) == 0 &&
         std::find_if(keys, keys + 3, [&](const char* k) { return key == k; }) == keys + 3)
       r.fail(comment, "key '" + key + "'",
@@ -212,7 +215,7 @@ XyzFrame readXyz(std::istream& in, const std::string& source) {
     const double tw = commentReal(r, comment, keys[1], kv.at(keys[1]), "a twist (degrees)");
     long na = 0;
     if (!detail::parseInteger(kv.at(keys[2]), na) || na < 1 || na > 1000000000L)
-      r.fail(comment, std::string(keys[2]) + "=" + kv.at(keys[2]), "an integer >= 1");
+      r.fail(comment, std::string(keys[2]) + "=" + kv.at(keys[2]), "an integer from 1 to 1000000000");
     if (t < 0.0) r.fail(comment, fmt::format("{}={}", keys[0], t), "a translation >= 0 (Å)");
     if (t == 0.0) {
       const double m = tw * static_cast<double>(na) / 360.0;
@@ -276,10 +279,16 @@ void writeXyz(std::ostream& out, const ObjectiveCell& cell, const XyzExtras& ext
 }
 
 void writeXyzFile(const std::string& path, const ObjectiveCell& cell, const XyzExtras& extras) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "the file cannot be written");
-  writeXyz(out, cell, extras);
-  if (!out) throw InputError(path, "writing the file failed");
+  AtomicOutputFile file(path);
+  writeXyz(file.stream(), cell, extras);
+  file.commit();
+}
+
+long long unrolledAtomCount(const ObjectiveCell& cell, long zetaMin, long zetaMax) {
+  if (cell.symmetry.isRing()) zetaMin = zetaMax = 0;
+  const long double steps = static_cast<long double>(zetaMax) - zetaMin + 1;
+  const long double atoms = steps * cell.symmetry.rotationOrder() * cell.atomCount();
+  return atoms > 9e18L ? std::numeric_limits<long long>::max() : static_cast<long long>(atoms);
 }
 
 ObjectiveCell unroll(const ObjectiveCell& cell, long zetaMin, long zetaMax) {
@@ -288,6 +297,11 @@ ObjectiveCell unroll(const ObjectiveCell& cell, long zetaMin, long zetaMax) {
   if (zetaMax < zetaMin)
     throw InputError("<unroll>", "zeta range", fmt::format("{}..{}", zetaMin, zetaMax),
                      "zetaMin <= zetaMax");
+  const long long atoms = unrolledAtomCount(cell, zetaMin, zetaMax);
+  if (atoms > kMaxUnrolledAtoms)
+    throw InputError("<unroll>", "zeta range", fmt::format("{}..{}: {} atoms (about {:.3g} GB)",
+                                                         zetaMin, zetaMax, atoms, atoms * 60e-9),
+                     fmt::format("at most {} unrolled atoms", kMaxUnrolledAtoms));
   ObjectiveCell out;
   out.speciesNames = cell.speciesNames;
   const long nz = zetaMax - zetaMin + 1;
@@ -309,8 +323,8 @@ ObjectiveCell unroll(const ObjectiveCell& cell, long zetaMin, long zetaMax) {
 void writeUnrolledXyzFile(const std::string& path, const ObjectiveCell& cell, long zetaMin,
                           long zetaMax) {
   const ObjectiveCell u = unroll(cell, zetaMin, zetaMax);
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "the file cannot be written");
+  AtomicOutputFile file(path);
+  std::ofstream& out = file.stream();
   out << u.atomCount() << "\n";
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   if (u.symmetry.isRing()) {
@@ -327,7 +341,7 @@ void writeUnrolledXyzFile(const std::string& path, const ObjectiveCell& cell, lo
         box, u.symmetry.translation() * kBohrInAngstrom);
   }
   writeAtoms(out, u, shift, nullptr);
-  if (!out) throw InputError(path, "writing the file failed");
+  file.commit();
 }
 
 }  // namespace mesochain::objective

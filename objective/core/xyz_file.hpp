@@ -41,6 +41,11 @@ struct XyzExtras {
 void writeXyz(std::ostream& out, const ObjectiveCell& cell, const XyzExtras& extras = {});
 void writeXyzFile(const std::string& path, const ObjectiveCell& cell, const XyzExtras& extras = {});
 
+// At most this many atoms in an unrolled structure (about 60 bytes each in memory and 60 in
+// the .xyz text: 0.6 GB each); unrolledAtomCount is the count a range gives, checked before
+// anything is allocated.
+inline constexpr long long kMaxUnrolledAtoms = 10'000'000;
+long long unrolledAtomCount(const ObjectiveCell& cell, long zetaMin, long zetaMax);
 // The images g(zeta, c) of the cell atoms for zeta = zetaMin..zetaMax and every c, as plain
 // atoms (ordered by zeta, then c, then cell atom). The result is periodic along z with
 // period (zetaMax - zetaMin + 1) T when gamma = 0 (symmetry: screw with gamma = 0, N_a = 1),

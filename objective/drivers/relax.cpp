@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/units.hpp"
+#include "objective/core/cell_file.hpp"
 
 namespace mesochain::objective {
 
@@ -15,6 +17,18 @@ namespace {
 
 const dftb::EvaluationRequest kFull{true, true};
 
+// Every geometry a relaxation evaluates passes the check of a read geometry (finite
+// coordinates, atoms and images at least kMinimumAtomDistanceAngstrom apart): a step that
+// collapses atoms is an error, never an energy.
+dftb::Result evaluateChecked(const dftb::Calculator& calc, const ObjectiveCell& cell,
+                             int evaluations) {
+  cell.validate(evaluations == 0 ? std::string("the starting geometry of the relaxation")
+                                 : "the geometry of relaxation evaluation " +
+                                       std::to_string(evaluations + 1),
+                kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
+  return calc.evaluate(cell, kFull);
+}
+
 // FIRE on the cell atoms at fixed symmetry. Unit masses; the time step adapts.
 bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSettings& s,
                 dftb::Result& result, int& evaluations) {
@@ -23,7 +37,7 @@ bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
   double dt = 0.25, alpha = alphaStart;
   int sinceNegative = 0;
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, cell.atomCount());
-  result = calc.evaluate(cell, kFull);
+  result = evaluateChecked(calc, cell, evaluations);
   ++evaluations;
   for (int step = 0; step < s.maxSteps; ++step) {
     Eigen::Matrix3Xd f = -result.gradient;
@@ -52,7 +66,7 @@ bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
     const double largest = dx.colwise().norm().maxCoeff();
     if (largest > s.maxDisplacement) dx *= s.maxDisplacement / largest;
     cell.positions += dx;
-    result = calc.evaluate(cell, kFull);
+    result = evaluateChecked(calc, cell, evaluations);
     ++evaluations;
   }
   return maxForce(result.gradient) < s.forceTolerance;
@@ -67,7 +81,7 @@ bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
   const Eigen::Index n = 3 * cell.atomCount();
   std::vector<Eigen::VectorXd> ss, ys;
   std::vector<double> rhos;
-  result = calc.evaluate(cell, kFull);
+  result = evaluateChecked(calc, cell, evaluations);
   ++evaluations;
   auto flat = [](const Eigen::Matrix3Xd& m) {
     return Eigen::Map<const Eigen::VectorXd>(m.data(), m.size()).eval();
@@ -105,13 +119,13 @@ bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
     bool accepted = false;
     for (int trial = 0; trial < 12 && !accepted; ++trial, step0 *= 0.5) {
       cell.positions = x0 + step0 * dm;
-      result = calc.evaluate(cell, kFull);
+      result = evaluateChecked(calc, cell, evaluations);
       ++evaluations;
       accepted = result.freeEnergy <= f0 + 1e-4 * step0 * slope;
     }
     if (!accepted) {
       cell.positions = x0;
-      result = calc.evaluate(cell, kFull);
+      result = evaluateChecked(calc, cell, evaluations);
       ++evaluations;
       return false;
     }

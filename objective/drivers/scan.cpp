@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "objective/core/collapsed_tube_builder.hpp"
 #include "objective/core/kgrid.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"
+#include "objective/drivers/settings_fields.hpp"
 
 namespace mesochain::objective {
 
@@ -182,11 +184,12 @@ ObjectiveCell startingCell(const ScanSettings& s, const BendSource& b, const Pla
 }  // namespace
 
 namespace {
-// The hashed text: everything that determines a point's result except (since format 2) the
-// list of deformations, so that a scan may be extended (or trimmed) and resumed, reusing its
-// points (reuseCheckpoint). withList: the text of format 1, which included the list.
-std::string hashText(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
-                     const ScanSettings& s, bool withList) {
+// The hashed text of earlier versions (formats 1 and 2): a hand-kept list, which left out the
+// SCC settings, the dispersion summation and the angular momenta of the tables. Recognised only
+// to refuse such a checkpoint with a message saying why (readers of an old checkpoint cannot
+// know those settings). withList: format 1, which also included the deformation list.
+std::string legacyHashText(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
+                           const ScanSettings& s, bool withList) {
   std::string t = withList ? "mesochain-scan-1\n" : "mesochain-scan-2\n";
   t += fmt::format("kind {} direction {}\n", scanKindName(s.kind), bendDirectionName(s.direction));
   if (withList) {
@@ -210,17 +213,120 @@ std::string hashText(const ObjectiveCell& cell, const dftb::CalculatorSettings& 
   t += "identity " + s.identity + "\n";
   return t;
 }
+
+// The cell as text: symmetry, then species and position of every atom (all digits).
+std::string cellText(const ObjectiveCell& cell) {
+  std::string t = fmt::format("symmetry {:.17g} {:.17g} {}\n", cell.symmetry.translation(),
+                              cell.symmetry.twist(), cell.symmetry.rotationOrder());
+  for (int a = 0; a < cell.atomCount(); ++a)
+    t += fmt::format("{} {:.17g} {:.17g} {:.17g}\n", cell.speciesOf(a), cell.positions(0, a),
+                     cell.positions(1, a), cell.positions(2, a));
+  return t;
+}
+
+// The text of one setting value (all digits of a double; an enum by its number).
+template <class T>
+std::string valueText(const T& v) {
+  if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+  else if constexpr (std::is_enum_v<T>) return std::to_string(static_cast<long long>(v));
+  else if constexpr (std::is_floating_point_v<T>) return fmt::format("{:.17g}", v);
+  else if constexpr (std::is_integral_v<T>) return std::to_string(v);
+  else if constexpr (std::is_same_v<T, std::string>) return v;
+  else {
+    std::string t;
+    for (const auto& e : v) t += valueText(e) + " ";
+    return t;
+  }
+}
+
+// Every FieldRole::Result member of `s` (nested settings as "prefix.member") into `out`.
+template <class S>
+void collectSettings(const std::string& prefix, const S& s,
+                     std::map<std::string, std::string>& out) {
+  forEachField(s, [&](const char* name, const auto& v, FieldRole role) {
+    using T = std::decay_t<decltype(v)>;
+    if constexpr (VisitedSettings<T>) {
+      if (role == FieldRole::Result) collectSettings(prefix + name + ".", v, out);
+    } else if constexpr (std::is_invocable_v<T, int, double, double>) {
+      // a callback (progress): never a result setting
+    } else {
+      if (role == FieldRole::Result) out[prefix + name] = valueText(v);
+    }
+  });
+}
+
+// Long values (the parameter tables' contents, the atoms) are kept as their hash in the
+// checkpoint, so it stays small while still telling which setting changed.
+std::map<std::string, std::string> shortened(std::map<std::string, std::string> m) {
+  for (auto& [key, value] : m)
+    if (value.size() > 80) value = "fnv1a " + fnv1a(value);
+  return m;
+}
+
 }  // namespace
+
+std::map<std::string, std::string> scanIdentity(const ObjectiveCell& cell,
+                                                const dftb::CalculatorSettings& c,
+                                                const ScanSettings& s) {
+  std::map<std::string, std::string> out;
+  collectSettings("calculator.", c, out);
+  collectSettings("scan.", s, out);
+  out["cell"] = cellText(cell);
+  return shortened(std::move(out));
+}
 
 std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
                           const ScanSettings& s) {
-  return fnv1a(hashText(cell, c, s, false));
+  std::string t = "mesochain-scan-3\n";
+  for (const auto& [key, value] : scanIdentity(cell, c, s)) t += key + " " + value + "\n";
+  return fnv1a(t);
 }
 
-std::string legacyScanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
-                                const ScanSettings& s) {
-  return fnv1a(hashText(cell, c, s, true));
+std::vector<std::string> legacyScanInputHashes(const ObjectiveCell& cell,
+                                               const dftb::CalculatorSettings& c,
+                                               const ScanSettings& s) {
+  return {fnv1a(legacyHashText(cell, c, s, true)), fnv1a(legacyHashText(cell, c, s, false))};
 }
+
+namespace {
+// The InputError of a checkpoint of another input: names the settings that differ (a
+// checkpoint that records them), or says why an older checkpoint cannot be resumed.
+[[noreturn]] void refuseCheckpoint(const std::string& path, const ScanCheckpoint& old,
+                                   const std::string& hash,
+                                   const std::map<std::string, std::string>& now,
+                                   const std::vector<std::string>& legacy) {
+  const std::string fix = "remove it or run without --resume to start afresh";
+  if (old.settings.empty()) {
+    const bool sameRecorded =
+        std::find(legacy.begin(), legacy.end(), old.inputHash) != legacy.end();
+    throw InputError(path, "key input_hash",
+                     sameRecorded
+                         ? "a checkpoint of an earlier mesochain that matches this input in the "
+                           "settings it recorded, but did not record the [scc] settings, the "
+                           "dispersion summation or the tables' angular momenta"
+                         : fmt::format("a checkpoint of another scan input (hash {}, this input "
+                                       "{})", old.inputHash, hash),
+                     "a checkpoint of this scan with the same settings: " + fix);
+  }
+  std::vector<std::string> changed;
+  for (const auto& [key, value] : now) {
+    const auto it = old.settings.find(key);
+    if (it == old.settings.end())
+      changed.push_back(fmt::format("{} (not in the checkpoint; now {})", key, value));
+    else if (it->second != value)
+      changed.push_back(fmt::format("{} (checkpoint {}, now {})", key, it->second, value));
+  }
+  for (const auto& [key, value] : old.settings)
+    if (!now.count(key)) changed.push_back(fmt::format("{} (only in the checkpoint)", key));
+  std::string list;
+  for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
+  throw InputError(path, "key settings",
+                   fmt::format("a checkpoint of another scan input, changed: {}",
+                               list.empty() ? "hash " + old.inputHash : list),
+                   "the checkpoint of this scan (same settings; the deformation list may "
+                   "differ): " + fix);
+}
+}  // namespace
 
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
                    const dftb::CalculatorSettings& calcSettings, const ScanSettings& s) {
@@ -256,23 +362,21 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
 
   ScanCheckpoint checkpoint;
   checkpoint.inputHash = out.inputHash;
+  checkpoint.settings = scanIdentity(cell, calcSettings, s);
   checkpoint.kind = s.kind;
   std::error_code ec;
   if (s.resume && !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath, ec)) {
     ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
-    // A checkpoint of the older hash (list included) is accepted for the very same list.
-    if (old.inputHash != out.inputHash &&
-        old.inputHash != legacyScanInputHash(cell, calcSettings, s))
-      throw InputError(s.checkpointPath, "key input_hash",
-                       fmt::format("a checkpoint of another scan input (hash {}, this input {})",
-                                   old.inputHash, out.inputHash),
-                       "the checkpoint of this scan (same settings; the deformation list may "
-                       "differ): remove it or run without --resume to start afresh");
+    if (old.inputHash != out.inputHash)
+      refuseCheckpoint(s.checkpointPath, old, out.inputHash, checkpoint.settings,
+                       legacyScanInputHashes(cell, calcSettings, s));
     // Points are matched by deformation value (bend: ring order) against the plan of this list.
     std::vector<PlannedPoint> keys;
     for (const PlanEntry& e : plan) keys.push_back({e.deformation, e.rotationOrder});
+    std::map<std::string, std::string> settings = std::move(checkpoint.settings);
     checkpoint = reuseCheckpoint(std::move(old), keys);
     checkpoint.inputHash = out.inputHash;
+    checkpoint.settings = std::move(settings);
     out.reused = static_cast<int>(checkpoint.completed.size());
     out.keptAside = static_cast<int>(checkpoint.keptAside.size());
     std::cerr << fmt::format("mesochain: resuming {}: {} points reused, {} new", s.checkpointPath,
@@ -298,7 +402,19 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
                                     total, step, fmax));
     };
     const auto t0 = std::chrono::steady_clock::now();
-    RelaxOutcome o = relax(calc, std::move(start), rs);
+    RelaxOutcome o;
+    try {
+      o = relax(calc, std::move(start), rs);
+    } catch (const InputError& err) {
+      // A deformation (or a relaxation step) that collapses atoms: an error naming the point.
+      const std::string what =
+          s.kind == ScanKind::Bend
+              ? fmt::format("scan point {} of {} (ring of rotation order {})", index + 1, total,
+                            e.rotationOrder)
+              : fmt::format("scan point {} of {} ({} {} {})", index + 1, total,
+                            scanKindName(s.kind), e.deformation, deformationUnit(s.kind));
+      throw InputError(what, err.what());
+    }
     ScanPoint p;
     p.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     p.deformation = e.deformation;

@@ -26,6 +26,7 @@
 // points no longer listed aside in the file, and refuses a checkpoint whose input hash (all
 // settings except the deformation list) differs from the current input.
 #include <functional>
+#include <map>
 #include <limits>
 #include <memory>
 #include <string>
@@ -103,14 +104,21 @@ struct ScanResult {
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
                    const dftb::CalculatorSettings& calculator, const ScanSettings& settings);
 
-// The hash (16 hex digits, FNV-1a 64) of everything that determines a point's result: all
-// settings, the cell and the identity, but not the list of deformations.
+// Every setting that determines a point's result, by name ("calculator.scc.mixing",
+// "scan.relax.force_tolerance", ...; objective/drivers/settings_fields.hpp visits every member of
+// the settings structs, so none can be left out), plus "cell" (its symmetry and atoms). The
+// deformation list and how the run proceeds (checkpoint path, --stop-after) are not part of it.
+// Values longer than 80 characters (the cell, the tables' contents) appear as "fnv1a HASH".
+std::map<std::string, std::string> scanIdentity(const ObjectiveCell& cell,
+                                                const dftb::CalculatorSettings& calculator,
+                                                const ScanSettings& settings);
+// The hash (16 hex digits, FNV-1a 64) of scanIdentity.
 std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& calculator,
                           const ScanSettings& settings);
-// The older hash, which included the list of deformations: a checkpoint carrying it is resumed
-// when the list is the same (and rewritten with the current hash).
-std::string legacyScanInputHash(const ObjectiveCell& cell,
-                                const dftb::CalculatorSettings& calculator,
-                                const ScanSettings& settings);
+// The hashes earlier versions would give this input (formats 1 and 2, which left out the SCC
+// settings and the dispersion summation): such a checkpoint is refused, saying why.
+std::vector<std::string> legacyScanInputHashes(const ObjectiveCell& cell,
+                                               const dftb::CalculatorSettings& calculator,
+                                               const ScanSettings& settings);
 
 }  // namespace mesochain::objective

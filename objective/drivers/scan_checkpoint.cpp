@@ -8,7 +8,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/atomic_file.hpp"
 #include "common/errors.hpp"
+#include "common/finite_output.hpp"
+#include "common/units.hpp"
+#include "objective/core/cell_file.hpp"
 
 namespace mesochain::objective {
 
@@ -46,6 +50,7 @@ json pointJson(int index, const ScanPoint& p) {
 ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan) {
   ScanCheckpoint out;
   out.inputHash = old.inputHash;
+  out.settings = std::move(old.settings);
   out.kind = old.kind;
   out.planSize = static_cast<int>(plan.size());
   std::vector<ScanPoint> candidates = std::move(old.keptAside);
@@ -77,23 +82,15 @@ void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& c,
   j["format"] = 1;
   j["what"] = "mesochain scan checkpoint";
   j["input_hash"] = c.inputHash;
+  j["settings"] = c.settings;
   j["kind"] = scanKindName(c.kind);
   j["plan_size"] = c.planSize;
   j["completed"] = json::array();
   for (const auto& [index, p] : c.completed) j["completed"].push_back(pointJson(index, p));
   j["kept_aside"] = json::array();
   for (const ScanPoint& p : c.keptAside) j["kept_aside"].push_back(pointJson(-1, p));
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::trunc);
-    if (!f) throw InputError(tmp, "cannot open the checkpoint file for writing");
-    f << j.dump(1) << "\n";
-    f.flush();
-    if (!f) throw InputError(tmp, "cannot write the checkpoint file (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path, "cannot rename " + tmp + " to the checkpoint: " + ec.message());
+  requireFiniteJson(j, path);
+  writeFileAtomically(path, j.dump(1) + "\n");
 }
 
 ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& speciesSource) {
@@ -115,6 +112,8 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
   ScanCheckpoint c;
   try {
     c.inputHash = j.at("input_hash").get<std::string>();
+    if (j.contains("settings"))
+      c.settings = j.at("settings").get<std::map<std::string, std::string>>();
     const std::string kind = j.at("kind").get<std::string>();
     c.kind = kind == "stretch" ? ScanKind::Stretch
              : kind == "twist" ? ScanKind::Twist
@@ -149,6 +148,9 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
                                                  cj.at("twist_rad").get<double>(),
                                                  cj.at("symmetry_rotation_order").get<int>(),
                                                  path.c_str());
+      // The restored atoms warm-start other points: checked as a read geometry is.
+      p.cell.validate(fmt::format("{}, completed point with index {}", path, index),
+                      kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
       return std::make_pair(index, std::move(p));
     };
     for (const json& e : j.at("completed")) {

@@ -1,8 +1,8 @@
 #pragma once
 // The checkpoint file of a deformation scan (JSON): the input hash and every completed point
 // with its relaxed atoms, so that a resumed scan can skip it and warm-start its neighbours.
-// Written atomically: the text goes to PATH.tmp, which is then renamed over PATH, so an
-// interruption leaves either the previous or the new checkpoint, never half of one.
+// Written atomically (common/atomic_file.hpp): the text goes to PATH.tmp.PID, which is then
+// renamed over PATH, so an interruption leaves either the previous or the new checkpoint, never half of one.
 #include <map>
 #include <string>
 #include <vector>
@@ -13,6 +13,9 @@ namespace mesochain::objective {
 
 struct ScanCheckpoint {
   std::string inputHash;
+  // scanIdentity (long values as their hash): names what changed when the hash differs; empty
+  // in checkpoints of earlier versions.
+  std::map<std::string, std::string> settings;
   ScanKind kind = ScanKind::Stretch;
   int planSize = 0;
   std::map<int, ScanPoint> completed;  // plan index -> point (with its relaxed cell)

@@ -35,7 +35,7 @@ std::string relativeTo(const std::string& scanFile, const std::string& path) {
   return (fs::path(scanFile).parent_path() / path).lexically_normal().string();
 }
 
-// The parameter tables by element pair and content: part of the input hash, so a checkpoint
+// The parameter tables by element pair and content, and the angular momenta used of them: part of the input hash, so a checkpoint
 // made with other tables is refused, while the same tables at another path (a moved or
 // re-cloned project, another build) are accepted.
 std::string identityOf(const CellInput& cell) {
@@ -46,6 +46,9 @@ std::string identityOf(const CellInput& cell) {
     content << in.rdbuf();
     s += fmt::format("table {} {}\n", pair, content.str());
   }
+  // The basis of each species (the tables hold up to d; l_max may restrict it).
+  for (const auto& [species, lmax] : cell.maxAngularMomentum)
+    s += fmt::format("max_angular_momentum {} {}\n", species, lmax);
   return s;
 }
 
@@ -95,7 +98,7 @@ ScanInput readScanFile(const std::string& path) {
       s.values.push_back(deg * units::kDegree);
   } else {
     s.kind = ScanKind::Bend;
-    const char* expected = "a non-empty array of ring rotation orders N_a (integers >= 2)";
+    const char* expected = "a non-empty array of ring rotation orders N_a (integers from 2 to 100000000)";
     const toml::value& v = root.at("rotation_orders");
     if (!v.is_array() || v.as_array().empty()) root.fail("rotation_orders", detail::describe(v), expected);
     for (const toml::value& e : v.as_array()) {
@@ -110,7 +113,7 @@ ScanInput readScanFile(const std::string& path) {
     s.direction = dir == "soft" ? BendDirection::Soft : BendDirection::Hard;
     if (root.has("ring_angular")) {
       const toml::value& a = root.at("ring_angular");
-      const char* exp = "\"all\" or a number of sampled angular quantum numbers >= 1";
+      const char* exp = "\"all\" or a number of sampled angular quantum numbers from 1 to 1000000000";
       if (a.is_string() && a.as_string().str == "all") {
         s.ringAngular.samples = 0;
       } else if (a.is_integer() && a.as_integer() >= 1 && a.as_integer() <= 1000000000L) {
@@ -140,7 +143,7 @@ ScanInput readScanFile(const std::string& path) {
     }
     if (r->has("max_steps")) {
       const long n = r->integer("max_steps", "a positive integer");
-      if (n < 1 || n > 100000000L) r->fail("max_steps", std::to_string(n), "a positive integer");
+      if (n < 1 || n > 100000000L) r->fail("max_steps", std::to_string(n), "an integer from 1 to 100000000");
       s.relax.maxSteps = static_cast<int>(n);
     }
     if (r->has("relax_translation"))

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
+#include "common/finite_output.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::objective {
@@ -58,16 +60,10 @@ std::string scanCurveCsv(const ScanResult& r) {
 }
 
 void writeScanCurve(const ScanResult& r, const std::string& jsonPath, const std::string& csvPath) {
-  if (!jsonPath.empty()) {
-    std::ofstream f(jsonPath);
-    if (!f) throw InputError(jsonPath, "cannot open the scan JSON output for writing");
-    f << scanCurveJson(r).dump(2) << "\n";
-  }
-  if (!csvPath.empty()) {
-    std::ofstream f(csvPath);
-    if (!f) throw InputError(csvPath, "cannot open the scan CSV output for writing");
-    f << scanCurveCsv(r);
-  }
+  const nlohmann::json j = scanCurveJson(r);
+  requireFiniteJson(j, jsonPath.empty() ? std::string("the scan curve") : jsonPath);
+  if (!jsonPath.empty()) writeFileAtomically(jsonPath, j.dump(2) + "\n");
+  if (!csvPath.empty()) writeFileAtomically(csvPath, scanCurveCsv(r));
 }
 
 }  // namespace mesochain::objective

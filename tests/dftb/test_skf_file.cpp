@@ -1,5 +1,8 @@
 // Reader of DFTB+ .skf files: known entries of the shipped tables, the free number layout, and
 // one error (with file name and line number) per kind of malformed file.
+#include <filesystem>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "dftb/skf_file.hpp"
@@ -132,7 +135,7 @@ TEST(SkfFile, ExtendedFormat) {
     for (int c = 0; c < 40; ++c) o << (c < 20 ? i + 0.01 * c : -i - 0.01 * (c - 20)) << " ";
     o << "\n";
   }
-  o << "Spline\n1 2.0\n1 0 0\n1.0 2.0 0.1 0 0 0 0 0\n";
+  o << "Spline\n1 1.0\n1 0 0\n0.5 1.0 0.1 0 0 0 0 0\n";  // within the 1 Bohr table
   const SkfTable t = readSkfFile(writeFile(dir, "X-X.skf", o.str()), true);
   EXPECT_TRUE(t.extended);
   EXPECT_EQ(t.rows(), 10);
@@ -174,7 +177,8 @@ std::string rows(int n, int from = 1) {
 
 TEST(SkfFile, MalformedFilesNameFileAndLine) {
   const std::string head = std::string("0.1, 6\n") + kAtomic + "\n12.0, 19*0.0\n";
-  const std::string spline = "Spline\n1 2.0\n1 0 0\n1.0 2.0 0.1 0 0 0 0 0\n";
+  // The repulsion ends within the 0.5 Bohr of table.
+  const std::string spline = "Spline\n1 0.5\n1 0 0\n0.25 0.5 0.1 0 0 0 0 0\n";
   // A well-formed file first, so that each failure below is due to its one defect.
   {
     const auto dir = scratchDir();
@@ -205,4 +209,46 @@ TEST(SkfFile, MalformedFilesNameFileAndLine) {
 TEST(SkfFile, MissingFileIsInputError) {
   const std::string msg = inputErrorOf([] { readSkfFile("/nonexistent/Q-Q.skf", true); });
   EXPECT_NE(msg.find("/nonexistent/Q-Q.skf"), std::string::npos) << msg;
+}
+
+namespace {
+std::string withFirstLine(const std::string& path, const std::string& first) {
+  std::ifstream in(path);
+  std::string line, out = first + "\n";
+  std::getline(in, line);
+  while (std::getline(in, line)) out += line + "\n";
+  return out;
+}
+}  // namespace
+
+// A grid line garbled from "0.02, 520" to "0.002, 520" leaves a table of 1 Bohr, shorter than the
+// repulsion (3.8 Bohr): refused, naming the grid line, instead of atoms that do not interact.
+TEST(SkfFile, GridShorterThanTheRepulsionIsRefused) {
+  const std::string cc = std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/C-C.skf";
+  EXPECT_NO_THROW(readSkfFile(cc, true));
+  expectErrorAt(withFirstLine(cc, "0.002, 520"), 1, true, "shorter than the repulsive potential");
+}
+
+// nGrid = 2e9 would allocate 640 GB: refused on the grid line with the estimate and the limit.
+TEST(SkfFile, HugeGridCountIsRefusedBeforeAllocating) {
+  const std::string cc = std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/C-C.skf";
+  expectErrorAt(withFirstLine(cc, "0.02, 2000000000"), 1, true, "at most 1000000 grid points");
+  expectErrorAt(withFirstLine(cc, "0.02, 3000000000"), 1, true, "at most 2147483647");
+}
+
+// Every table shipped with the project (params/) and the test data still loads.
+TEST(SkfFile, EveryShippedTableLoads) {
+  int tables = 0;
+  for (const std::string root : {std::string(MESOCHAIN_SOURCE_DIR) + "/params",
+                                 std::string(MESOCHAIN_TEST_DATA)})
+    for (const auto& e : std::filesystem::recursive_directory_iterator(root))
+      if (e.path().extension() == ".skf") {
+        const std::string name = e.path().stem().string();
+        const auto dash = name.find('-');
+        const bool homonuclear = dash != std::string::npos &&
+                                 name.substr(0, dash) == name.substr(dash + 1);
+        EXPECT_NO_THROW(readSkfFile(e.path().string(), homonuclear)) << e.path();
+        ++tables;
+      }
+  EXPECT_GE(tables, 11);
 }

@@ -6,8 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -178,7 +181,7 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
   EXPECT_EQ(part.computed, 2);
   EXPECT_EQ(part.points.size(), 2u);
   ASSERT_TRUE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp." + std::to_string(::getpid())));
   s.stopAfter = -1;
   const ScanResult rest = runScan(tube, params, calc, s);
   EXPECT_TRUE(rest.complete);
@@ -191,27 +194,48 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
     EXPECT_NEAR(rest.points[k].energy, full.points[k].energy, 1e-12);
     EXPECT_EQ(rest.points[k].evaluations, full.points[k].evaluations);
   }
-  // A checkpoint of the older hash (which included the list) is resumed for the same list and
-  // rewritten with the current hash; for another list it is refused.
+  // A checkpoint of an earlier version (a hash of a hand-kept list of settings that left out
+  // the SCC settings and the dispersion summation, no settings recorded) is refused, saying so.
+  std::string saved;
   {
     std::ifstream in(path);
-    nlohmann::json j = nlohmann::json::parse(in);
-    j["input_hash"] = legacyScanInputHash(tube, calc, s);
-    std::ofstream(path) << j.dump(1);
+    std::stringstream text;
+    text << in.rdbuf();
+    saved = text.str();
   }
-  const ScanResult legacy = runScan(tube, params, calc, s);
-  EXPECT_EQ(legacy.computed, 0);
-  EXPECT_EQ(legacy.reused, 4);
-  EXPECT_EQ(readScanCheckpoint(path, tube).inputHash, rest.inputHash);
+  for (const std::string& legacyHash : legacyScanInputHashes(tube, calc, s)) {
+    {
+      std::ifstream in(path);
+      nlohmann::json j = nlohmann::json::parse(in);
+      j["input_hash"] = legacyHash;
+      j.erase("settings");
+      std::ofstream(path) << j.dump(1);
+    }
+    try {
+      runScan(tube, params, calc, s);
+      FAIL() << "a checkpoint of an earlier version was resumed";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("did not record the [scc] settings"),
+                std::string::npos) << e.what();
+    }
+  }
+  // The checkpoint of this version, resumed with the same settings: nothing to compute.
+  std::ofstream(path) << saved;
+  const ScanResult same = runScan(tube, params, calc, s);
+  EXPECT_EQ(same.computed, 0);
+  EXPECT_EQ(same.reused, 4);
+  // Another SCC mixing (which the earlier identity left out) is refused, naming the setting.
   {
-    std::ifstream in(path);
-    nlohmann::json j = nlohmann::json::parse(in);
-    j["input_hash"] = legacyScanInputHash(tube, calc, s);
-    std::ofstream(path) << j.dump(1);
+    dftb::CalculatorSettings scc = calc;
+    scc.scc.mixing = 0.3;
+    try {
+      runScan(tube, params, scc, s);
+      FAIL() << "a checkpoint of another SCC mixing was resumed";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("calculator.scc.mixing (checkpoint 0.2"),
+                std::string::npos) << e.what();
+    }
   }
-  s.values = {0.02, -0.01};
-  EXPECT_THROW(runScan(tube, params, calc, s), InputError);
-  s.values = {0.02, -0.01, 0.01};
   // A changed setting (another force tolerance) refuses the checkpoint, naming it.
   s.relax.forceTolerance = 2e-5;
   try {

@@ -101,6 +101,22 @@ TEST(ScanFile, TableIdentityIsTheContentNotThePath) {
   EXPECT_NE(a, identity("b"));
 }
 
+// The tables' angular momenta change the basis, hence every point: part of the identity.
+TEST(ScanFile, MaxAngularMomentumIsPartOfTheIdentity) {
+  std::filesystem::create_directories(kDir + "/lmax");
+  const auto identity = [&](const std::string& parameters) {
+    write("lmax/cell.toml",
+          "format = 1\n[builder]\ntype = \"nanotube\"\nn = 5\nm = 5\ncell = \"helical\"\n"
+          "[kpoints]\nhelical = 8\n[electrons]\ntemperature = 300\n[parameters]\n"
+          "set = \"pbc-0-3\"\n" + parameters);
+    const std::string scan = write("lmax/scan.toml",
+                                   "format = 1\ncell = \"cell.toml\"\nkind = \"stretch\"\n"
+                                   "strains = [0.01]\n[output]\njson = \"s.json\"\n");
+    return readScanFile(scan).settings.identity;
+  };
+  EXPECT_NE(identity(""), identity("max_angular_momentum = { C = \"s\" }\n"));
+}
+
 TEST(ScanFile, BadInputNamesFileAndKey) {
   writeCells();
   const std::string head = "format = 1\ncell = \"helical.toml\"\n";

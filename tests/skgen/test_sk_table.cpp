@@ -1,11 +1,12 @@
 // Tables and the .skf writer: a written table read back by dftb/skf_file gives the same numbers;
 // the generated C-H and H-C tables against pbc-0-3 (the same recipe as C-C, from their
 // documentation blocks: H exponents 0.50 1.0 2.0, density (r/2.5)^2, wavefunction (r/3.0)^2).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
 #include "dftb/skf_file.hpp"
 #include "skgen/sk_table.hpp"
 #include "skgen/skf_writer.hpp"
@@ -68,6 +69,24 @@ TEST(SkfWriter, TableReadBackIsIdentical) {
 TEST(SkfWriter, RejectsATableWithoutRepulsive) {
   dftb::SkfTable t = buildSkTable(hydrogen(), hydrogen(), XcKind::Pbe, coarseGrid(), true);
   EXPECT_THROW(writeSkfFile(tempPath("x.skf"), t, ""), std::invalid_argument);
+}
+
+// A non-finite integral (a failed quadrature) is an error naming the file; nothing is written.
+TEST(SkfWriter, RefusesANonFiniteNumber) {
+  TableGrid g = coarseGrid();
+  dftb::SkfTable t = buildSkTable(hydrogen(), hydrogen(), XcKind::Pbe, g, true);
+  t.spline = zeroRepulsive(g.spacing, 3.0);
+  t.ham(2, dftb::kSkfSsSigma) = std::nan("");
+  const std::string path = tempPath("nan.skf");
+  std::filesystem::remove(path);
+  try {
+    writeSkfFile(path, t, "");
+    FAIL() << "a table with NaN was written";
+  } catch (const mesochain::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 TEST(SkTable, CutoffShorterThanTheFirstGridPointIsAnError) {

@@ -136,6 +136,20 @@ TEST(SkgenJob, CutoffShorterThanTheFirstGridPointIsAClearError) {
   EXPECT_NE(e.find("shorter than the first grid point"), std::string::npos) << e;
 }
 
+// Integers checked before narrowing, a grid of too many rows, and a repulsion beyond the grid
+// (a table the .skf reader would refuse) are refused with the limits.
+TEST(SkgenJob, OutOfRangeValuesStateTheirLimits) {
+  const std::string p = errorOf("powers", replaced(kHydrogen, "powers = 3", "powers = 4294967299"));
+  EXPECT_NE(p.find("4294967299"), std::string::npos) << p;
+  EXPECT_NE(p.find("from 1 to 6"), std::string::npos) << p;
+  const std::string g = errorOf("rows", replaced(kHydrogen, "spacing_bohr = 0.5", "spacing_bohr = 1e-9"));
+  EXPECT_NE(g.find("at most 100000 rows"), std::string::npos) << g;
+  const std::string r = errorOf(
+      "repulsion", std::string(kHydrogen) +
+                       "[repulsive.H-H]\ncurve_csv = \"h2.csv\"\ncutoff_bohr = 8.0\n");
+  EXPECT_NE(r.find("beyond the integral grid"), std::string::npos) << r;
+}
+
 TEST(SkgenJob, ConfinementTooSmallForABoundStateIsAClearError) {
   const std::string e = errorOf(
       "bound", replaced(kHydrogen, "wavefunction = { r0_bohr = 3.0", "wavefunction = { r0_bohr = 0.3"), true);
