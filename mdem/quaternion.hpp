@@ -114,12 +114,14 @@ RotationVector trackedLogWithJacobianGeneral(const Quat& q, const Vec3& previous
 // The same, with a branch free of transcendental functions for the common case of a small
 // relative rotation near the principal branch: with p = +-q (p.w >= 0), t = |p.vec| / p.w =
 // tan(phi/2) and u = t^2 <= 1e-2 (phi <= 0.199 rad),
-//   theta = (2 / p.w) (atan(t) / t) p.vec,   atan(t)/t = sum_k (-u)^k / (2k + 1)   (8 terms,
-//   truncation < u^8 / 17 = 6e-18 relative),
-//   beta = 1/12 + phi^2/720 + phi^4/30240 + phi^6/1209600 + phi^8/47900160  (the Laurent
-//   series of 1/phi^2 - cot(phi/2)/(2 phi), truncation < 6e-16 relative at phi = 0.2).
-// The principal branch is the tracked one when |previous| + phi < pi, ensured by
-// |previous|^2 < 8 (|previous| < 2.83).  Otherwise the general case.
+//   atan(t)/t = P(u) = 1 - u Q(u),  Q(u) = sum_{k=0..6} (-u)^k / (2k + 3)   (truncation of P
+//   < u^8 / 17 = 6e-18 relative),   theta = (2 / p.w) P(u) p.vec,
+// and, since phi = 2 t P and cot(phi/2) = 1/t exactly,
+//   beta = 1/phi^2 - cot(phi/2)/(2 phi) = (1 - P) / (4 u P^2) = Q / (4 P^2)
+// with no cancellation (-> 1/12 at u = 0). Q is evaluated by Estrin's scheme and beta does not
+// wait for theta: the chain is short. The principal branch is the tracked one when
+// |previous| + phi < pi, ensured by |previous|^2 < 8 (|previous| < 2.83). Otherwise the
+// general case.
 inline RotationVector trackedLogWithJacobian(const Quat& q, const Vec3& previous) {
   const double sign = q.w < 0.0 ? -1.0 : 1.0;
   const double w = sign * q.w;
@@ -127,15 +129,14 @@ inline RotationVector trackedLogWithJacobian(const Quat& q, const Vec3& previous
   if (s2 <= 1e-2 * w * w && previous.squaredNorm() < 8.0) {
     const double invW = 1.0 / w;
     const double u = s2 * invW * invW;
-    const double atanRatio =
-        1.0 - u * (1.0 / 3 - u * (1.0 / 5 - u * (1.0 / 7 - u * (1.0 / 9 - u * (1.0 / 11 -
-        u * (1.0 / 13 - u * (1.0 / 15)))))));
+    const double u2 = u * u, u4 = u2 * u2;
+    const double tail = (1.0 / 3 - u * (1.0 / 5)) + u2 * (1.0 / 7 - u * (1.0 / 9)) +
+                        u4 * ((1.0 / 11 - u * (1.0 / 13)) + u2 * (1.0 / 15));  // Q(u)
+    const double atanRatio = 1.0 - u * tail;                                    // P(u)
     const double scale = 2.0 * sign * invW * atanRatio;
     RotationVector r;
     r.theta = {scale * q.x, scale * q.y, scale * q.z};
-    const double phi2 = r.theta.squaredNorm();
-    r.beta = 1.0 / 12 + phi2 * (1.0 / 720 + phi2 * (1.0 / 30240 + phi2 * (1.0 / 1209600 +
-             phi2 * (1.0 / 47900160))));
+    r.beta = 0.25 * tail / (atanRatio * atanRatio);
     return r;
   }
   return trackedLogWithJacobianGeneral(q, previous);
