@@ -39,8 +39,8 @@ class BondEffect : public Effect {
   // Evaluates bond k in the current state into the buffer and advances its tracked twist branch.
   void computeBond(const Bodies& s, int k) {
     Bond& b = bonds_[k];
-    const BondResult r = evaluateBond(b, s.position[b.a], s.orientation[b.a], s.position[b.b],
-                                      s.orientation[b.b]);
+    const BondForces r = bondForces(b, s.position[b.a], s.orientation[b.a], s.position[b.b],
+                                    s.orientation[b.b]);
     b.theta = r.theta;  // follow the branch of the relative rotation
     results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
   }

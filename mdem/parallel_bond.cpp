@@ -42,6 +42,7 @@ Bond makeBond(int a, int b, const Bodies& bodies, const BondStiffness& k, const 
   f.col(0) = ex, f.col(1) = ez.cross(ex), f.col(2) = ez;
   bond.frameA = fromMatrix(f);
   bond.frameB = normalized(conj(qb) * qa * bond.frameA);
+  bond.anchorAInBondFrame = rotateInverse(bond.frameA, bond.anchorA);
   return bond;
 }
 
@@ -84,6 +85,36 @@ BondResult evaluateBond(const Bond& bond, const Vec3& xa, const Quat& qa, const 
   r.forceA = g;
   r.forceB = -g;
   r.torqueA = (sa + delta).cross(g) + w;
+  r.torqueB = -sb.cross(g) - w;
+  return r;
+}
+
+// The derivation above with s_a + Delta = x_b + s_b - x_a (the arm of G about x_a).
+BondForces bondForces(const Bond& bond, const Vec3& xa, const Quat& qa, const Vec3& xb,
+                      const Quat& qb) {
+  const Quat fa = qa * bond.frameA;
+  const Quat fb = qb * bond.frameB;
+  const Mat3 ra = toMatrix(fa);  // bond frame of a -> world
+  const Vec3 sb = rotate(qb, bond.anchorB);
+  const Vec3 arm = (xb + sb) - xa;
+  const Vec3 d = ra.transpose() * arm - bond.anchorAInBondFrame;
+
+  BondForces r;
+  const RotationVector rel = trackedLogWithJacobian(conj(fa) * fb, bond.theta);
+  r.theta = rel.theta;
+
+  const double kna = bond.k.kn * bond.section.area;
+  const double ksa = bond.k.ks * bond.section.area;
+  const Vec3 gradD(ksa * d.x(), ksa * d.y(), kna * d.z());
+  const Vec3 gradTheta(bond.k.kn * bond.section.ix * rel.theta.x(),
+                       bond.k.kn * bond.section.iy * rel.theta.y(),
+                       bond.k.ks * bond.section.j * rel.theta.z());
+
+  const Vec3 g = ra * gradD;
+  const Vec3 w = ra * inverseLeftJacobianTransposeApply(rel, gradTheta);
+  r.forceA = g;
+  r.forceB = -g;
+  r.torqueA = arm.cross(g) + w;
   r.torqueB = -sb.cross(g) - w;
   return r;
 }

@@ -55,6 +55,8 @@ struct Bond {
   Quat frameB;                  // bond frame relative to body b (coincides with a's at creation)
   Vec3 theta = Vec3::Zero();    // tracked relative rotation vector (branch memory)
   double restLength = 0.0;      // distance between the centres at creation (nm)
+  // Derived by makeBond: a's anchor in the bond frame of a, R(frameA)^T anchorA (constant).
+  Vec3 anchorAInBondFrame = Vec3::Zero();
 };
 
 // Energies of one bond (zJ).
@@ -81,9 +83,22 @@ struct BondResult {
 // projection of a's body x axis (thickness direction of a brick).
 Bond makeBond(int a, int b, const Bodies& bodies, const BondStiffness& k, const BondSection& s);
 
-// The kernel: forces, torques and energies of one bond. `previousTheta` selects the branch.
+// The kernel: forces, torques and energies of one bond. bond.theta selects the branch.
 BondResult evaluateBond(const Bond& bond, const Vec3& xa, const Quat& qa, const Vec3& xb,
                         const Quat& qb);
+
+// Forces (pN), torques (pN nm) and the relative rotation vector of one bond, without energies.
+struct BondForces {
+  Vec3 forceA, torqueA, forceB, torqueB;
+  Vec3 theta;
+};
+
+// The time-stepping kernel: the same forces and torques as evaluateBond (the exact derivatives
+// of its energy), computed with the bond frame of a as one matrix, no anchor rotation for a
+// (d = R_a'^T (x_b + s_b - x_a) - R(frameA)^T anchorA), and one log whose small-angle branch
+// has no transcendental call (quaternion.hpp, trackedLogWithJacobian).
+BondForces bondForces(const Bond& bond, const Vec3& xa, const Quat& qa, const Vec3& xb,
+                      const Quat& qb);
 
 // Stiffness matrix (12 x 12, world frame, DOF order u_a, phi_a, u_b, phi_b with phi small
 // world-frame rotations) of the bond linearised about its rest state in the current

@@ -49,4 +49,11 @@ Vec3 trackedLog(const Quat& q, const Vec3& previous) {
   return (phi0 + kTwoPi * k) * n;
 }
 
+RotationVector trackedLogWithJacobianGeneral(const Quat& q, const Vec3& previous) {
+  RotationVector r;
+  r.theta = trackedLog(q, previous);
+  r.beta = inverseLeftJacobianBeta(r.theta.squaredNorm());
+  return r;
+}
+
 }  // namespace mesochain::mdem

@@ -44,11 +44,15 @@ inline Vec3 rotate(const Quat& q, const Vec3& v) {
 // R(q)^T v.
 inline Vec3 rotateInverse(const Quat& q, const Vec3& v) { return rotate(conj(q), v); }
 
+// R(q) of a unit quaternion (the standard quadratic form; equals rotate() column by column).
 inline Mat3 toMatrix(const Quat& q) {
+  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+  const double xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
+  const double wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
   Mat3 r;
-  r.col(0) = rotate(q, Vec3::UnitX());
-  r.col(1) = rotate(q, Vec3::UnitY());
-  r.col(2) = rotate(q, Vec3::UnitZ());
+  r << 1.0 - 2.0 * (yy + zz), 2.0 * (xy - wz), 2.0 * (xz + wy),  //
+      2.0 * (xy + wz), 1.0 - 2.0 * (xx + zz), 2.0 * (yz - wx),   //
+      2.0 * (xz - wy), 2.0 * (yz + wx), 1.0 - 2.0 * (xx + yy);
   return r;
 }
 
@@ -85,17 +89,63 @@ inline Mat3 skew(const Vec3& v) {
 // J_l^{-T}(theta) m = m + 1/2 theta x m + beta theta x (theta x m) with
 // beta = 1/phi^2 - cot(phi/2)/(2 phi): the transpose of the inverse left Jacobian of SO(3).
 // If R -> exp([eps]) R, then log(R) -> theta + J_l^{-1}(theta) eps to first order.
+inline double inverseLeftJacobianBeta(double phi2) {
+  if (phi2 < 1e-8) return 1.0 / 12.0 + phi2 / 720.0;
+  const double phi = std::sqrt(phi2);
+  return 1.0 / phi2 - 1.0 / (2.0 * phi * std::tan(0.5 * phi));
+}
 inline Vec3 inverseLeftJacobianTransposeApply(const Vec3& theta, const Vec3& m) {
-  const double phi2 = theta.squaredNorm();
-  double beta;
-  if (phi2 < 1e-8) {
-    beta = 1.0 / 12.0 + phi2 / 720.0;
-  } else {
-    const double phi = std::sqrt(phi2);
-    beta = 1.0 / phi2 - 1.0 / (2.0 * phi * std::tan(0.5 * phi));
-  }
+  const double beta = inverseLeftJacobianBeta(theta.squaredNorm());
   const Vec3 tm = theta.cross(m);
   return m + 0.5 * tm + beta * theta.cross(tm);
+}
+
+// A tracked log together with the coefficient beta(|theta|) of J_l^{-T}(theta) (above), for
+// the bond kernel: theta = trackedLog(q, previous) and J_l^{-T}(theta) m = m + 1/2 theta x m +
+// beta theta x (theta x m).
+struct RotationVector {
+  Vec3 theta;
+  double beta;
+};
+
+// General case (any angle, any number of turns): trackedLog and beta in closed form.
+RotationVector trackedLogWithJacobianGeneral(const Quat& q, const Vec3& previous);
+
+// The same, with a branch free of transcendental functions for the common case of a small
+// relative rotation near the principal branch: with p = +-q (p.w >= 0), t = |p.vec| / p.w =
+// tan(phi/2) and u = t^2 <= 1e-2 (phi <= 0.199 rad),
+//   atan(t)/t = P(u) = 1 - u Q(u),  Q(u) = sum_{k=0..6} (-u)^k / (2k + 3)   (truncation of P
+//   < u^8 / 17 = 6e-18 relative),   theta = (2 / p.w) P(u) p.vec,
+// and, since phi = 2 t P and cot(phi/2) = 1/t exactly,
+//   beta = 1/phi^2 - cot(phi/2)/(2 phi) = (1 - P) / (4 u P^2) = Q / (4 P^2)
+// with no cancellation (-> 1/12 at u = 0). Q is evaluated by Estrin's scheme and beta does not
+// wait for theta: the chain is short. The principal branch is the tracked one when
+// |previous| + phi < pi, ensured by |previous|^2 < 8 (|previous| < 2.83). Otherwise the
+// general case.
+inline RotationVector trackedLogWithJacobian(const Quat& q, const Vec3& previous) {
+  const double sign = q.w < 0.0 ? -1.0 : 1.0;
+  const double w = sign * q.w;
+  const double s2 = q.x * q.x + q.y * q.y + q.z * q.z;
+  if (s2 <= 1e-2 * w * w && previous.squaredNorm() < 8.0) {
+    const double invW = 1.0 / w;
+    const double u = s2 * invW * invW;
+    const double u2 = u * u, u4 = u2 * u2;
+    const double tail = (1.0 / 3 - u * (1.0 / 5)) + u2 * (1.0 / 7 - u * (1.0 / 9)) +
+                        u4 * ((1.0 / 11 - u * (1.0 / 13)) + u2 * (1.0 / 15));  // Q(u)
+    const double atanRatio = 1.0 - u * tail;                                    // P(u)
+    const double scale = 2.0 * sign * invW * atanRatio;
+    RotationVector r;
+    r.theta = {scale * q.x, scale * q.y, scale * q.z};
+    r.beta = 0.25 * tail / (atanRatio * atanRatio);
+    return r;
+  }
+  return trackedLogWithJacobianGeneral(q, previous);
+}
+
+// J_l^{-T}(theta) m with beta from trackedLogWithJacobian.
+inline Vec3 inverseLeftJacobianTransposeApply(const RotationVector& r, const Vec3& m) {
+  const Vec3 tm = r.theta.cross(m);
+  return m + 0.5 * tm + r.beta * r.theta.cross(tm);
 }
 
 }  // namespace mesochain::mdem
