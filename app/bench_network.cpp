@@ -249,7 +249,7 @@ int printKernelCurve(const NetworkBenchOptions& o) {
                              e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
               << std::flush;
   }
-  for (double tol : {1e-2, 3e-3, 1e-3, 1e-4, 1e-5}) {
+  for (double tol : {3e-2, 1e-2, 3e-3, 1e-3, 1e-4}) {
     const mdem::QuadratureChoice c = mdem::quadraturePointsForTolerance(potential, la, lb, tol);
     const mdem::AnisotropicVdwKernel k(potential, lb, c.points);
     const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
