@@ -4,6 +4,7 @@
 // exactly zero), and the quadrature count chosen from a tolerance (once per pair of kinds).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "contact_fixture.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_file.hpp"
+#include "mdem/scene_file.hpp"
 
 namespace mesochain::mdem {
 namespace {
@@ -209,6 +211,36 @@ TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsValidated) {
       EXPECT_NE(std::string(e.what()).find("quadrature_tolerance"), std::string::npos) << e.what();
     }
   }
+}
+
+// The scene key: read from [vdw_contact]; with quadrature_points too, or out of range, an InputError
+// naming it.
+TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsRead) {
+  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
+  ASSERT_TRUE(in.good());
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string example = buffer.str(), anchor = "cutoff_gap_nm = 1.2\n";
+  ASSERT_NE(example.find(anchor), std::string::npos);
+  const std::string path = (std::filesystem::temp_directory_path() / "mdem-quadrature-tolerance.toml").string();
+  auto withKeys = [&](const std::string& keys) {
+    std::string text = example;
+    text.insert(text.find(anchor) + anchor.size(), keys);
+    std::ofstream(path) << text;
+    return path;
+  };
+  EXPECT_EQ(loadScene(withKeys("")).contacts.vdw.quadratureTolerance, 0.0);
+  EXPECT_EQ(loadScene(withKeys("quadrature_tolerance = 0.01\n")).contacts.vdw.quadratureTolerance, 0.01);
+  for (const char* bad : {"quadrature_tolerance = 0.01\nquadrature_points = 6\n", "quadrature_tolerance = 0.5\n",
+                          "quadrature_tolerance = 0.0\n"}) {
+    try {
+      loadScene(withKeys(bad));
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("quadrature_tolerance"), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove(path);
 }
 
 }  // namespace
