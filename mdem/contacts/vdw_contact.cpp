@@ -95,9 +95,22 @@ ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& k, const Segment& a
   return tableQuadrature(k.table, k.rule, farCut(*k.potential), a, b);
 }
 
+AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double halfLengthA, double halfLengthB,
+                                           double quadratureTolerance)
+    : potential(&p), table(p, halfLengthB) {
+  const QuadratureChoice c = quadraturePointsForTolerance(p, table, halfLengthA, quadratureTolerance);
+  rule = gaussLegendre(c.points);
+  sampledError = c.worstError;
+}
+
 QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, double la, double lb,
                                               double tolerance) {
-  const SegmentLineTable table(potential, lb);
+  return quadraturePointsForTolerance(potential, SegmentLineTable(potential, lb), la, tolerance);
+}
+
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, const SegmentLineTable& table,
+                                              double la, double tolerance) {
+  const double lb = table.halfLength();
   const double cut = farCut(potential), scale = std::abs(potential.wellDepthPerLength()) * 2.0 * la;
   const double dEq = potential.equilibriumDistance(), pi = 3.14159265358979323846;
   // The sample: b crossing a (along x) at axis distance d (normal y), axis turned by t in the

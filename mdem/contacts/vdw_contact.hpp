@@ -51,9 +51,14 @@ ContactPairResult anisotropicVdw(const TubePairPotential& potential, const Quadr
 // b's whole segment (one lookup per quadrature point) and the rule along a.
 struct AnisotropicVdwKernel {
   AnisotropicVdwKernel(const TubePairPotential& potential, double halfLengthB, int quadraturePoints);
+  // The rule chosen from `quadratureTolerance` for quadrature elements of half-length la
+  // (quadraturePointsForTolerance below, on this kernel's table).
+  AnisotropicVdwKernel(const TubePairPotential& potential, double halfLengthA, double halfLengthB,
+                       double quadratureTolerance);
   const TubePairPotential* potential;
   SegmentLineTable table;
   QuadratureRule rule;
+  double sampledError = 0.0;  // with a tolerance: the chosen rule's worst sampled error
 };
 
 // The same energy as the kernel above with the same rule (to round-off when lb is a whole number
@@ -76,6 +81,9 @@ struct QuadratureChoice {
 };
 QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, double halfLengthA,
                                               double halfLengthB, double tolerance);
+// The same on a table already built for the partner half-length.
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, const SegmentLineTable& table,
+                                              double halfLengthA, double tolerance);
 
 // Isotropic kernel U(r), tabulated for one pair of element lengths.
 class IsotropicVdw {

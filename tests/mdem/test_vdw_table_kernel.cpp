@@ -179,6 +179,9 @@ TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
     const QuadratureChoice c = quadraturePointsForTolerance(p, kHalf, kHalf, tol);
     std::printf("tolerance %.0e: %d points, worst sampled error %.3g\n", tol, c.points, c.worstError);
     EXPECT_LE(c.worstError, tol);
+    const AnisotropicVdwKernel k(p, kHalf, kHalf, tol);  // the same choice, built into a kernel
+    EXPECT_EQ(static_cast<int>(k.rule.x.size()), c.points);
+    EXPECT_EQ(k.sampledError, c.worstError);
     EXPECT_GE(c.points, previous);
     previous = c.points;
     // The sampled bound checked on geometries outside the sample (other angles, tilted out of
