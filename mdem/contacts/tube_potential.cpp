@@ -60,7 +60,7 @@ double parallelTubeEnergyPerLength(const LennardJones& lj, double r1, double r2,
 
 BicubicTable::BicubicTable(int nx, int ny, double x0, double y0, double dx, double dy)
     : nx_(nx), ny_(ny), x0_(x0), y0_(y0), dx_(dx), dy_(dy), invDx_(1.0 / dx), invDy_(1.0 / dy),
-      data_(4 * nx * ny, 0.0) {}
+      tLast_(nx - 1.0), sLast_(ny - 1.0), data_(4 * nx * ny, 0.0) {}
 
 void BicubicTable::set(int i, int j, double f, double fx, double fy, double fxy) {
   double* p = &data_[4 * (i * ny_ + j)];

@@ -67,12 +67,13 @@ class BicubicTable {
  private:
   int nx_ = 0, ny_ = 0;
   double x0_ = 0, y0_ = 0, dx_ = 1, dy_ = 1, invDx_ = 1, invDy_ = 1;
+  double tLast_ = 0, sLast_ = 0;  // nx - 1, ny - 1: the clamps in grid units
   std::vector<double> data_;  // 4 per node: f, fx dx, fy dy, fxy dx dy
 };
 
 inline double BicubicTable::eval(double x, double y, double* fx, double* fy) const {
   double t = (x - x0_) * invDx_, s = (y - y0_) * invDy_;
-  t = std::clamp(t, 0.0, nx_ - 1.0), s = std::clamp(s, 0.0, ny_ - 1.0);
+  t = std::clamp(t, 0.0, tLast_), s = std::clamp(s, 0.0, sLast_);
   const int i = std::min(static_cast<int>(t), nx_ - 2), j = std::min(static_cast<int>(s), ny_ - 2);
   t -= i, s -= j;
   // Cubic Hermite basis: 0 = value at 0, 1 = value at 1, 2 = slope at 0, 3 = slope at 1.

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "mdem/contacts/contact_dashpot.hpp"
 
 namespace mesochain::mdem {
 
@@ -17,6 +16,19 @@ double farCut(const TubePairPotential& p) { return p.cutoffDistance() + 3.0 * p.
 // The tolerance search stops here: against the 64-point reference, a larger rule is not checked.
 constexpr int kMaxPoints = 48;
 
+// Squared distance of the closest points of two axis segments from the scalars c = t_a.t_b,
+// e = t_a.r0, f = t_b.r0, rr = |r0|^2 (r0 = x_a - x_b): the clamped alternation of closestPoints
+// (contact_dashpot.hpp), |r0 + s t_a - u t_b|^2 expanded.
+double closestDistance2(double c, double e, double f, double rr, double la, double lb) {
+  const double sine2 = 1.0 - c * c;
+  double s = sine2 > 1e-10 ? std::clamp((c * f - e) / sine2, -la, la)
+                           : std::clamp(0.5 * (std::max(-e - lb, -la) + std::min(-e + lb, la)), -la, la);
+  double u = std::clamp(f + s * c, -lb, lb);
+  s = std::clamp(u * c - e, -la, la);
+  u = std::clamp(f + s * c, -lb, lb);
+  return std::max(0.0, rr + s * s + u * u + 2.0 * (s * e - u * f - s * u * c));
+}
+
 // E = sum_q w_q D(h_q, u0_q) along a, with rel_q = r0 + s_q t_a (r0 = x_a - x_b), u0 = rel . t_b,
 // h = |rel - u0 t_b|. With dh/drel = (rel - u0 t_b)/h,
 // dh/dt_b = -u0 rel/h, du0/drel = t_b, du0/dt_b = rel and alpha = D_h/h, beta = D_u0 - alpha u0:
@@ -28,17 +40,18 @@ template <class Density>
 ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a, const Segment& b, double hCut,
                                     double uCut, double farCutDistance, Density density) {
   ContactPairResult r;
-  double sa, sb;
-  closestPoints(a, b, &sa, &sb);
-  if ((a.centre + sa * a.axis - b.centre - sb * b.axis).squaredNorm() >= farCutDistance * farCutDistance) return r;
   const Vec3 r0 = a.centre - b.centre;
   const Vec3 &ta = a.axis, &tb = b.axis;
-  const double c = ta.dot(tb), f = tb.dot(r0);
+  const double la = a.halfLength, lb = b.halfLength, rr = r0.squaredNorm();
+  const double cut2 = farCutDistance * farCutDistance, reach = farCutDistance + la + lb;
+  if (rr >= reach * reach) return r;  // centres too far apart for any two points to be within the cut
+  const double c = ta.dot(tb), e = ta.dot(r0), f = tb.dot(r0);
+  if (closestDistance2(c, e, f, rr, la, lb) >= cut2) return r;
   // h^2 = |r0_perp + s ta_perp|^2 with the parts normal to t_b formed once as vectors (no
   // cancellation between |rel|^2 and u0^2 when the axes nearly meet).
   const Vec3 r0Perp = r0 - f * tb, taPerp = ta - c * tb;
   const double hA = r0Perp.squaredNorm(), hB = 2.0 * r0Perp.dot(taPerp), hC = taPerp.squaredNorm();
-  const double la = a.halfLength, hCut2 = hCut * hCut;
+  const double hCut2 = hCut * hCut;
   double energy = 0.0, sA = 0.0, sAs = 0.0, sB = 0.0, sBs = 0.0;
   const std::size_t n = rule.x.size();
   for (std::size_t q = 0; q < n; ++q) {
