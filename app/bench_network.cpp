@@ -1,6 +1,9 @@
 // `mesochain bench network`: element-steps per second of random tube networks with van der
 // Waals contacts and dashpots (10^4 and 10^5 elements), on 1 thread and on OpenMP threads, with
-// the shares of time in the neighbour search and in the contact kernels.
+// the shares of time in the neighbour search and in the contact kernels; with --kernel-curve, the
+// accuracy-against-cost curve of the anisotropic contact kernel over the pairs of the network
+// (docs/benchmarks.md, "mDEM networks").
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -14,8 +17,10 @@
 
 #include "app/bench_network_lammps.hpp"
 #include "app/commands.hpp"
+#include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"
+#include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/units.hpp"
 
@@ -31,6 +36,10 @@ struct NetworkBenchOptions {
   bool isotropic = false;
   bool effectsCost = false;  // also: the same network with fewer named effects (1 thread)
   std::string lammps;   // prefix of the LAMMPS export (then nothing is timed)
+  bool kernelCurve = false;  // the accuracy-against-cost curve of the anisotropic kernel
+  int kernelPoints = 0;      // > 0: only this rule, --kernel-repeat times (callgrind)
+  int kernelRepeat = 20;
+  std::string kernelPath = "table";  // "table" (one lookup of D per point) or "line" (three of H)
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -119,6 +128,145 @@ void printEffectsCost(const NetworkBenchOptions& o) {
               << std::flush;
   }
 }
+
+// The anisotropic kernel over the contact pairs of a network: each list pair as the contact
+// effect orders it (quadrature along the element of the lower filament).
+using SegmentPair = std::pair<mdem::Segment, mdem::Segment>;
+std::vector<SegmentPair> networkPairs(const mdem::Scene& s) {
+  const mdem::ContactNeighbourhood nb(s, mdem::VdwContactEffect::interactionRange(s));
+  const mdem::FilamentTopology& topo = nb.topology();
+  std::vector<SegmentPair> out;
+  for (const auto& [i, j] : nb.list().pairs()) {
+    const bool iOuter = topo.filament[i] != topo.filament[j] ? topo.filament[i] < topo.filament[j] : i < j;
+    const int o = iOuter ? i : j, in = iOuter ? j : i;
+    const mdem::Segment so = nb.segment(s.bodies, o);
+    out.emplace_back(so, nb.imageNear(s.bodies, in, so.centre));
+  }
+  return out;
+}
+
+// All pairs, `repeat` times (the function callgrind is told to collect: --toggle-collect=*evaluatePairs*).
+template <class Kernel>
+__attribute__((noinline)) double evaluatePairs(const Kernel& kernel, const std::vector<SegmentPair>& pairs, int repeat,
+                                               std::vector<mdem::ContactPairResult>* out) {
+  double sum = 0.0;
+  out->resize(pairs.size());
+  for (int r = 0; r < repeat; ++r)
+    for (std::size_t k = 0; k < pairs.size(); ++k) sum += ((*out)[k] = kernel(pairs[k].first, pairs[k].second)).energy;
+  return sum;
+}
+
+struct KernelError {
+  double energyMax = 0.0, energySum = 0.0, forceMax = 0.0, nsPerPair = 0.0;
+};
+
+// Errors against the 64-point rule: largest |dE| in units of the contact energy scale |Phi_eq| 2 la,
+// sum |dE| over sum |E|, largest |dF| (force and torque on both elements) over the largest |F|.
+template <class Kernel>
+KernelError kernelError(const Kernel& kernel, const std::vector<SegmentPair>& pairs,
+                        const std::vector<mdem::ContactPairResult>& ref, double scale, double seconds) {
+  std::vector<mdem::ContactPairResult> out;
+  evaluatePairs(kernel, pairs, 1, &out);
+  KernelError e;
+  double refSum = 0.0, fRef = 0.0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const mdem::ContactPairResult &a = out[k], &b = ref[k];
+    e.energyMax = std::max(e.energyMax, std::abs(a.energy - b.energy) / scale);
+    e.energySum += std::abs(a.energy - b.energy), refSum += std::abs(b.energy);
+    fRef = std::max({fRef, b.forceA.norm(), b.torqueA.norm(), b.torqueB.norm()});
+    e.forceMax = std::max({e.forceMax, (a.forceA - b.forceA).norm(), (a.torqueA - b.torqueA).norm(),
+                           (a.torqueB - b.torqueB).norm()});
+  }
+  e.energySum /= refSum, e.forceMax /= fRef;
+  // Wall time per pair: best of a few rounds of `seconds` / 5 each (noisy machine: use callgrind).
+  double best = 1e300;
+  for (int round = 0; round < 5; ++round) {
+    const auto t0 = std::chrono::steady_clock::now();
+    long evaluated = 0;
+    double elapsed = 0.0;
+    while (elapsed < seconds / 5) {
+      evaluatePairs(kernel, pairs, 1, &out);
+      evaluated += static_cast<long>(pairs.size());
+      elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    best = std::min(best, 1e9 * elapsed / evaluated);
+  }
+  e.nsPerPair = best;
+  return e;
+}
+
+int printKernelCurve(const NetworkBenchOptions& o) {
+  const mdem::Scene s = networkScene(o.totals.front(), o.tubeLength, false);
+  const std::vector<SegmentPair> pairs = networkPairs(s);
+  mdem::TubePairSpec ps;
+  ps.lj = s.contacts.vdw.lj, ps.radiusA = ps.radiusB = s.elementTypes[0].radius;
+  ps.switchGap = s.contacts.vdw.switchGap, ps.cutoffGap = s.contacts.vdw.cutoffGap;
+  const mdem::TubePairPotential potential(ps);
+  const double la = 0.5 * s.elementTypes[0].length, lb = la;
+  const auto line = [&](const mdem::QuadratureRule& rule) {
+    return [&potential, rule](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(potential, rule, a, b); };
+  };
+  if (o.kernelPoints > 0) {  // one variant only, for callgrind
+    std::vector<mdem::ContactPairResult> out;
+    double sum = 0.0;
+    if (o.kernelPath == "line") {
+      sum = evaluatePairs(line(mdem::gaussLegendre(o.kernelPoints)), pairs, o.kernelRepeat, &out);
+    } else {
+      const mdem::AnisotropicVdwKernel k(potential, lb, o.kernelPoints);
+      sum = evaluatePairs([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
+                          pairs, o.kernelRepeat, &out);
+    }
+    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points: energy sum {:.10g} zJ\n", pairs.size(),
+                             o.kernelRepeat, o.kernelPath, o.kernelPoints, sum / o.kernelRepeat);
+    return 0;
+  }
+  const double scale = std::abs(potential.wellDepthPerLength()) * 2.0 * la;
+  std::vector<mdem::ContactPairResult> ref;
+  const mdem::AnisotropicVdwKernel reference(potential, lb, 64);
+  auto tableKernel = [](const mdem::AnisotropicVdwKernel& k) {
+    return [&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); };
+  };
+  evaluatePairs(tableKernel(reference), pairs, 1, &ref);
+  long interacting = 0, farPairs = 0;
+  for (const auto& r : ref) interacting += r.energy != 0.0;
+  const double farCut = potential.cutoffDistance() + 3.0 * potential.gridStep();  // the kernel's early out
+  for (const auto& [a, b] : pairs) {
+    double sa, sb;
+    mdem::closestPoints(a, b, &sa, &sb);
+    farPairs += (a.centre + sa * a.axis - b.centre - sb * b.axis).norm() >= farCut;
+  }
+  std::cout << fmt::format(
+      "Anisotropic contact kernel over the {} list pairs of the {}-element network ({} with nonzero energy, {} "
+      "skipped by the far-pair early out);\n"
+      "errors against the 64-point rule: energy max in units of |Phi_eq| 2 la = {:.4g} zJ, energy sum |dE|/sum |E|,\n"
+      "force/torque max |dF| over max |F|; ns per pair: best of 5 (wall time, noisy: callgrind figures in "
+      "docs/benchmarks.md)\n",
+      pairs.size(), s.bodies.size(), interacting, farPairs, scale);
+  std::cout << "path   points  tolerance  sample_worst  energy_max   energy_sum   force_max    ns/pair\n";
+  const double per = std::max(0.2, o.seconds / 10);
+  for (int n : {2, 3, 4, 5, 6, 8, 10, 12, 16}) {
+    const mdem::AnisotropicVdwKernel k(potential, lb, n);
+    const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
+    std::cout << fmt::format("table  {:6d}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", n, "-", "-",
+                             e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
+              << std::flush;
+  }
+  for (int n : {8}) {
+    const KernelError e = kernelError(line(mdem::gaussLegendre(n)), pairs, ref, scale, per);
+    std::cout << fmt::format("line   {:6d}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", n, "-", "-",
+                             e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
+              << std::flush;
+  }
+  for (double tol : {3e-2, 1e-2, 3e-3, 1e-3, 1e-4}) {
+    const mdem::QuadratureChoice c = mdem::quadraturePointsForTolerance(potential, la, lb, tol);
+    const mdem::AnisotropicVdwKernel k(potential, lb, c.points);
+    const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
+    std::cout << fmt::format("table  {:6d}  {:9.0e}  {:12.3g}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", c.points,
+                             tol, c.worstError, e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
+              << std::flush;
+  }
+  return 0;
+}
 }  // namespace
 
 Command makeBenchNetworkCommand() {
@@ -137,9 +285,17 @@ Command makeBenchNetworkCommand() {
                      "also time the same network without the contact effects named (1 thread)");
     (*sub)->add_option("--lammps", opt->lammps,
                        "write PREFIX-<elements>.data/.table/.settings for bench/lammps/in.network and exit");
+    (*sub)->add_flag("--kernel-curve", opt->kernelCurve,
+                     "accuracy against cost of the anisotropic kernel (Gauss points, quadrature tolerance) and exit");
+    (*sub)->add_option("--kernel-points", opt->kernelPoints,
+                       "with --kernel-curve: only this many Gauss points, --kernel-repeat times (for callgrind)");
+    (*sub)->add_option("--kernel-repeat", opt->kernelRepeat, "with --kernel-points: evaluations of every pair");
+    (*sub)->add_option("--kernel-path", opt->kernelPath, "with --kernel-points: table (D, one lookup) or line (H, three)")
+        ->check(CLI::IsMember({"table", "line"}));
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
+    if (opt->kernelCurve) return printKernelCurve(*opt);
     if (!opt->lammps.empty()) {
       for (int total : opt->totals) {
         const mdem::Scene s = networkScene(total, opt->tubeLength, true);

@@ -33,6 +33,9 @@ void validateContactSpec(const Scene& s) {
     requireRange(s, "vdw_contact.switch_gap_nm", v.switchGap, 1.5 * v.lj.sigma, 5.0, "nm");
     requireRange(s, "vdw_contact.cutoff_gap_nm", v.cutoffGap, v.switchGap + 0.05, 6.0, "nm");
     requireRange(s, "vdw_contact.quadrature_points", v.quadraturePoints, 2, 64, "");
+    if (v.quadratureTolerance != 0.0)
+      requireRange(s, "vdw_contact.quadrature_tolerance", v.quadratureTolerance, 1e-4, 0.1,
+                   "(fraction of the contact energy scale)");
     requireRange(s, "vdw_contact.layer_spacing_nm", v.layerSpacing, 0.0, 2.0, "nm");
     requireRange(s, "vdw_contact.edge_width_nm", v.edgeWidth, 0.05, 5.0, "nm");
   }
@@ -112,7 +115,8 @@ void readContactTables(const TomlTable& root, Scene& s) {
   if (root.has("vdw_contact")) {
     const TomlTable t = root.table("vdw_contact");
     t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
-                 "cutoff_gap_nm", "quadrature_points", "layer_spacing_nm", "edge_width_nm"});
+                 "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "layer_spacing_nm",
+                 "edge_width_nm"});
     VdwContactSpec& v = s.contacts.vdw;
     const std::string form = t.string("form", "anisotropic");
     if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
@@ -123,6 +127,14 @@ void readContactTables(const TomlTable& root, Scene& s) {
     v.switchGap = t.number("switch_gap_nm", v.switchGap);
     v.cutoffGap = t.number("cutoff_gap_nm", v.cutoffGap);
     v.quadraturePoints = static_cast<int>(t.integer("quadrature_points", v.quadraturePoints));
+    if (t.has("quadrature_tolerance")) {
+      if (t.has("quadrature_points"))
+        t.fail("quadrature_tolerance", "both quadrature_points and quadrature_tolerance",
+               "one of them (the tolerance chooses the number of points)");
+      v.quadratureTolerance = t.number("quadrature_tolerance");
+      if (!(v.quadratureTolerance > 0.0))
+        t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
+    }
     v.layerSpacing = t.number("layer_spacing_nm", v.layerSpacing);
     v.edgeWidth = t.number("edge_width_nm", v.edgeWidth);
   }

@@ -30,6 +30,10 @@ struct VdwContactSpec {
   double switchGap = 0.8;       // nm
   double cutoffGap = 1.2;       // nm
   int quadraturePoints = 8;     // Gauss points along the quadrature element (anisotropic form)
+  // > 0: the points are chosen once per pair of element kinds as the fewest whose sampled energy
+  // error is below this fraction of the contact energy scale (quadraturePointsForTolerance in
+  // vdw_contact.hpp); quadraturePoints is then not used. 0: quadraturePoints.
+  double quadratureTolerance = 0.0;
   // Bricks (face-to-face form, face_contact.hpp): spacing of the two graphene layers of a
   // collapsed tube, and the width of the smooth edge of a face.
   double layerSpacing = 0.34;   // nm

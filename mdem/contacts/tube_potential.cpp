@@ -59,15 +59,16 @@ double parallelTubeEnergyPerLength(const LennardJones& lj, double r1, double r2,
 }
 
 BicubicTable::BicubicTable(int nx, int ny, double x0, double y0, double dx, double dy)
-    : nx_(nx), ny_(ny), x0_(x0), y0_(y0), dx_(dx), dy_(dy), data_(4 * nx * ny, 0.0) {}
+    : nx_(nx), ny_(ny), x0_(x0), y0_(y0), dx_(dx), dy_(dy), invDx_(1.0 / dx), invDy_(1.0 / dy),
+      tLast_(nx - 1.0), sLast_(ny - 1.0), data_(4 * nx * ny, 0.0) {}
 
 void BicubicTable::set(int i, int j, double f, double fx, double fy, double fxy) {
   double* p = &data_[4 * (i * ny_ + j)];
   p[0] = f, p[1] = fx * dx_, p[2] = fy * dy_, p[3] = fxy * dx_ * dy_;
 }
 
-double BicubicTable::eval(double x, double y, double* fx, double* fy) const {
-  double t = (x - x0_) / dx_, s = (y - y0_) / dy_;
+double BicubicTable::eval(double x, double y, double* fx, double* fy, double* fxy) const {
+  double t = (x - x0_) * invDx_, s = (y - y0_) * invDy_;
   t = std::clamp(t, 0.0, nx_ - 1.0), s = std::clamp(s, 0.0, ny_ - 1.0);
   const int i = std::min(static_cast<int>(t), nx_ - 2), j = std::min(static_cast<int>(s), ny_ - 2);
   t -= i, s -= j;
@@ -77,22 +78,18 @@ double BicubicTable::eval(double x, double y, double* fx, double* fy) const {
   const double dbt[4] = {6 * t2 - 6 * t, -6 * t2 + 6 * t, 3 * t2 - 4 * t + 1, 3 * t2 - 2 * t};
   const double bs[4] = {2 * s3 - 3 * s2 + 1, -2 * s3 + 3 * s2, s3 - 2 * s2 + s, s3 - s2};
   const double dbs[4] = {6 * s2 - 6 * s, -6 * s2 + 6 * s, 3 * s2 - 4 * s + 1, 3 * s2 - 2 * s};
-  double f = 0.0, gt = 0.0, gs = 0.0;
+  double f = 0.0, gt = 0.0, gs = 0.0, gts = 0.0;
   for (int a = 0; a < 2; ++a) {
     for (int b = 0; b < 2; ++b) {
       const double* p = &data_[4 * ((i + a) * ny_ + (j + b))];
-      const double c[4] = {p[0], p[1], p[2], p[3]};
       // value: B_a(t) B_b(s); x-slope: B_{2+a}(t) B_b(s); y-slope: B_a(t) B_{2+b}(s); cross.
-      f += c[0] * bt[a] * bs[b] + c[1] * bt[2 + a] * bs[b] + c[2] * bt[a] * bs[2 + b] +
-           c[3] * bt[2 + a] * bs[2 + b];
-      gt += c[0] * dbt[a] * bs[b] + c[1] * dbt[2 + a] * bs[b] + c[2] * dbt[a] * bs[2 + b] +
-            c[3] * dbt[2 + a] * bs[2 + b];
-      gs += c[0] * bt[a] * dbs[b] + c[1] * bt[2 + a] * dbs[b] + c[2] * bt[a] * dbs[2 + b] +
-            c[3] * bt[2 + a] * dbs[2 + b];
+      auto sum = [&](const double* ct, const double* cs) {
+        return p[0] * ct[a] * cs[b] + p[1] * ct[2 + a] * cs[b] + p[2] * ct[a] * cs[2 + b] + p[3] * ct[2 + a] * cs[2 + b];
+      };
+      f += sum(bt, bs), gt += sum(dbt, bs), gs += sum(bt, dbs), gts += sum(dbt, dbs);
     }
   }
-  if (fx) *fx = gt / dx_;
-  if (fy) *fy = gs / dy_;
+  *fx = gt * invDx_, *fy = gs * invDy_, *fxy = gts * invDx_ * invDy_;
   return f;
 }
 
@@ -223,6 +220,25 @@ double TubePairPotential::lineIntegral(double h, double u, double* dh, double* d
   *dh = 2.0 * h0 - h1;
   *du = u1;
   return 2.0 * g0 - g1;
+}
+
+double TubePairPotential::lineIntegral(double h, double u, double* dh, double* du, double* dhu) const {
+  const double sign = h < 0.0 ? -1.0 : 1.0;  // H is even in h
+  h = std::abs(h);
+  double value = 0.0;
+  *dh = *du = *dhu = 0.0;
+  if (h >= g_.xMax()) return 0.0;
+  if (u >= 0.0) {
+    if (u < g_.yMax()) value = g_.eval(h, u, dh, du, dhu);
+  } else {
+    // H(h, u) = 2 G(h, 0) - G(h, -u): dH/du = G_u(h, -u), d2H/dhdu = G_hu(h, -u).
+    double h0, u0, c0, h1 = 0.0, u1 = 0.0, c1 = 0.0, g1 = 0.0;
+    const double g0 = g_.eval(h, 0.0, &h0, &u0, &c0);
+    if (-u < g_.yMax()) g1 = g_.eval(h, -u, &h1, &u1, &c1);
+    value = 2.0 * g0 - g1, *dh = 2.0 * h0 - h1, *du = u1, *dhu = c1;
+  }
+  *dh *= sign, *dhu *= sign;
+  return value;
 }
 
 }  // namespace mesochain::mdem

@@ -22,6 +22,7 @@
 //     v in [a, b] (relative to the foot point) has energy density H(h, a) - H(h, b).
 //
 // Units: nm, zJ (mdem/units.hpp).
+#include <algorithm>
 #include <vector>
 
 namespace mesochain::mdem {
@@ -56,15 +57,47 @@ class BicubicTable {
   // Node data: value, d/dx, d/dy, d2/dxdy.
   void set(int i, int j, double f, double fx, double fy, double fxy);
   // Value and partial derivatives at (x, y), clamped to the table (the caller keeps inside).
+  // Inline: it is the inner loop of the contact kernel (44 multiply-adds, no division).
   double eval(double x, double y, double* fx, double* fy) const;
+  // The same with the cross derivative d2f/dxdy of the interpolant (tables built from tables).
+  double eval(double x, double y, double* fx, double* fy, double* fxy) const;
   double xMax() const { return x0_ + (nx_ - 1) * dx_; }
   double yMax() const { return y0_ + (ny_ - 1) * dy_; }
 
  private:
   int nx_ = 0, ny_ = 0;
-  double x0_ = 0, y0_ = 0, dx_ = 1, dy_ = 1;
-  std::vector<double> data_;  // 4 per node
+  double x0_ = 0, y0_ = 0, dx_ = 1, dy_ = 1, invDx_ = 1, invDy_ = 1;
+  double tLast_ = 0, sLast_ = 0;  // nx - 1, ny - 1: the clamps in grid units
+  std::vector<double> data_;  // 4 per node: f, fx dx, fy dy, fxy dx dy
 };
+
+inline double BicubicTable::eval(double x, double y, double* fx, double* fy) const {
+  double t = (x - x0_) * invDx_, s = (y - y0_) * invDy_;
+  t = std::clamp(t, 0.0, tLast_), s = std::clamp(s, 0.0, sLast_);
+  const int i = std::min(static_cast<int>(t), nx_ - 2), j = std::min(static_cast<int>(s), ny_ - 2);
+  t -= i, s -= j;
+  // Cubic Hermite basis: 0 = value at 0, 1 = value at 1, 2 = slope at 0, 3 = slope at 1.
+  const double t2 = t * t, s2 = s * s, t3 = t2 * t, s3 = s2 * s;
+  const double b1t = 3 * t2 - 2 * t3, b2t = t3 - 2 * t2 + t, b3t = t3 - t2, b0t = 1 - b1t;
+  const double d1t = 6 * (t - t2), d2t = 3 * t2 - 4 * t + 1, d3t = 3 * t2 - 2 * t;
+  const double b1s = 3 * s2 - 2 * s3, b2s = s3 - 2 * s2 + s, b3s = s3 - s2, b0s = 1 - b1s;
+  const double d1s = 6 * (s - s2), d2s = 3 * s2 - 4 * s + 1, d3s = 3 * s2 - 2 * s;
+  // Along y on the two rows i, i+1 (nodes j, j+1 are adjacent in memory): the value part (f, fy)
+  // and the x-slope part (fx, fxy), each with its y-derivative.
+  const double* p = &data_[4 * (i * ny_ + j)];
+  const double* q = p + 4 * ny_;
+  const double vp = p[0] * b0s + p[4] * b1s + p[2] * b2s + p[6] * b3s;
+  const double xp = p[1] * b0s + p[5] * b1s + p[3] * b2s + p[7] * b3s;
+  const double vq = q[0] * b0s + q[4] * b1s + q[2] * b2s + q[6] * b3s;
+  const double xq = q[1] * b0s + q[5] * b1s + q[3] * b2s + q[7] * b3s;
+  const double vpS = (p[4] - p[0]) * d1s + p[2] * d2s + p[6] * d3s;
+  const double xpS = (p[5] - p[1]) * d1s + p[3] * d2s + p[7] * d3s;
+  const double vqS = (q[4] - q[0]) * d1s + q[2] * d2s + q[6] * d3s;
+  const double xqS = (q[5] - q[1]) * d1s + q[3] * d2s + q[7] * d3s;
+  *fx = ((vq - vp) * d1t + xp * d2t + xq * d3t) * invDx_;
+  *fy = (vpS * b0t + vqS * b1t + xpS * b2t + xqS * b3t) * invDy_;
+  return vp * b0t + vq * b1t + xp * b2t + xq * b3t;
+}
 
 // The coarse-grained interaction of one pair of tube kinds (steps 1-4), built once.
 class TubePairPotential {
@@ -80,6 +113,10 @@ class TubePairPotential {
   double kernel(double rho) const;
   // H(h, u) = \int_u^inf w(sqrt(h^2 + v^2)) dv and its partial derivatives.
   double lineIntegral(double h, double u, double* dh, double* du) const;
+  // The same with the cross derivative d2H/dh du of the interpolant (to build other tables).
+  double lineIntegral(double h, double u, double* dh, double* du, double* dhu) const;
+  // Grid step of the tables (nm).
+  double gridStep() const { return step_; }
   // Minimum of Phi: equilibrium axis distance and depth (zJ/nm, negative).
   double equilibriumDistance() const { return dEq_; }
   double wellDepthPerLength() const { return phiEq_; }

@@ -2,43 +2,159 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
 
 namespace mesochain::mdem {
 
-ContactPairResult anisotropicVdw(const TubePairPotential& potential, const QuadratureRule& rule,
-                                 const Segment& a, const Segment& b) {
+namespace {
+// Early-out distance of the axis segments: d_c + 3 table steps. A quadrature point at distance
+// rho from segment b evaluates cells whose node data come from rows within sqrt(5) steps of
+// (h, u) (the cell corners and the central-difference slopes of H); beyond d_c those are all zero.
+double farCut(const TubePairPotential& p) { return p.cutoffDistance() + 3.0 * p.gridStep(); }
+
+// The tolerance search stops here: against the 64-point reference, a larger rule is not checked.
+constexpr int kMaxPoints = 48;
+
+// Squared distance of the closest points of two axis segments from the scalars c = t_a.t_b,
+// e = t_a.r0, f = t_b.r0, rr = |r0|^2 (r0 = x_a - x_b): the clamped alternation of closestPoints
+// (contact_dashpot.hpp), |r0 + s t_a - u t_b|^2 expanded.
+double closestDistance2(double c, double e, double f, double rr, double la, double lb) {
+  const double sine2 = 1.0 - c * c;
+  double s = sine2 > 1e-10 ? std::clamp((c * f - e) / sine2, -la, la)
+                           : std::clamp(0.5 * (std::max(-e - lb, -la) + std::min(-e + lb, la)), -la, la);
+  double u = std::clamp(f + s * c, -lb, lb);
+  s = std::clamp(u * c - e, -la, la);
+  u = std::clamp(f + s * c, -lb, lb);
+  return std::max(0.0, rr + s * s + u * u + 2.0 * (s * e - u * f - s * u * c));
+}
+
+// E = sum_q w_q D(h_q, u0_q) along a, with rel_q = r0 + s_q t_a (r0 = x_a - x_b), u0 = rel . t_b,
+// h = |rel - u0 t_b|. With dh/drel = (rel - u0 t_b)/h,
+// dh/dt_b = -u0 rel/h, du0/drel = t_b, du0/dt_b = rel and alpha = D_h/h, beta = D_u0 - alpha u0:
+//   dE/dr0 = sum w (alpha rel + beta t_b),  dE/dt_a = sum w s (alpha rel + beta t_b),
+//   dE/dt_b = sum w beta rel,
+// so the loop over the points carries five scalar sums and no vectors.
+// `density(h, u0, &D_h, &D_u0)` returns D; points with h >= hCut or |u0| >= uCut add nothing.
+template <class Density>
+ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a, const Segment& b, double hCut,
+                                    double uCut, double farCutDistance, Density density) {
   ContactPairResult r;
-  const double dc = potential.cutoffDistance();
-  Vec3 gradR = Vec3::Zero();    // dE/d(x_a) (= -dE/d(x_b))
-  Vec3 gradTa = Vec3::Zero();   // dE/d(t_a)
-  Vec3 gradTb = Vec3::Zero();   // dE/d(t_b)
-  const double la = a.halfLength, lb = b.halfLength;
-  for (std::size_t q = 0; q < rule.x.size(); ++q) {
-    const double s = la * rule.x[q], weight = la * rule.w[q];
-    const Vec3 rel = a.centre + s * a.axis - b.centre;
-    const double u0 = rel.dot(b.axis);
-    const Vec3 perp = rel - u0 * b.axis;
-    const double h = perp.norm();
-    const double lo = -lb - u0, hi = lb - u0;
-    if (h >= dc || lo >= dc || hi <= -dc) continue;
-    double hLo, uLo, hHi, uHi;
-    const double e = potential.lineIntegral(h, lo, &hLo, &uLo) - potential.lineIntegral(h, hi, &hHi, &uHi);
-    // dE_q = gh dh + ga d(lo) + gb d(hi)
-    const double gh = hLo - hHi, ga = uLo, gb = -uHi;
-    // dh/drel = perp/h, d(lo)/drel = d(hi)/drel = -t_b;  dh/dt_b = -u0 rel/h, d(lo)/dt_b = -rel.
-    const Vec3 dh = h > 1e-12 ? Vec3(perp / h) : Vec3::Zero();
-    const Vec3 gRel = gh * dh - (ga + gb) * b.axis;
-    const Vec3 gTb = (h > 1e-12 ? -gh * u0 / h : 0.0) * rel - (ga + gb) * rel;
-    r.energy += weight * e;
-    gradR += weight * gRel;
-    gradTa += (weight * s) * gRel;
-    gradTb += weight * gTb;
+  const Vec3 r0 = a.centre - b.centre;
+  const Vec3 &ta = a.axis, &tb = b.axis;
+  const double la = a.halfLength, lb = b.halfLength, rr = r0.squaredNorm();
+  const double cut2 = farCutDistance * farCutDistance, reach = farCutDistance + la + lb;
+  if (rr >= reach * reach) return r;  // centres too far apart for any two points to be within the cut
+  const double c = ta.dot(tb), e = ta.dot(r0), f = tb.dot(r0);
+  if (closestDistance2(c, e, f, rr, la, lb) >= cut2) return r;
+  // h^2 = |r0_perp + s ta_perp|^2 with the parts normal to t_b formed once as vectors (no
+  // cancellation between |rel|^2 and u0^2 when the axes nearly meet).
+  const Vec3 r0Perp = r0 - f * tb, taPerp = ta - c * tb;
+  const double hA = r0Perp.squaredNorm(), hB = 2.0 * r0Perp.dot(taPerp), hC = taPerp.squaredNorm();
+  const double hCut2 = hCut * hCut;
+  double energy = 0.0, sA = 0.0, sAs = 0.0, sB = 0.0, sBs = 0.0;
+  const std::size_t n = rule.x.size();
+  for (std::size_t q = 0; q < n; ++q) {
+    const double s = la * rule.x[q], w = la * rule.w[q];
+    const double u0 = f + s * c;
+    const double h2 = hA + s * (hB + s * hC);
+    if (h2 >= hCut2 || std::abs(u0) >= uCut) continue;
+    const double h = std::sqrt(std::max(h2, 0.0));
+    double dh, du;
+    const double d = density(h, u0, &dh, &du);
+    const double alpha = h > 1e-12 ? dh / h : 0.0, beta = du - alpha * u0;
+    energy += w * d;
+    sA += w * alpha, sAs += (w * s) * alpha;
+    sB += w * beta, sBs += (w * s) * beta;
   }
+  r.energy = energy;
+  const Vec3 gradR = sA * r0 + sAs * ta + sB * tb;
   r.forceA = -gradR;
   r.forceB = gradR;
-  r.torqueA = -a.axis.cross(gradTa);
-  r.torqueB = -b.axis.cross(gradTb);
+  // torque = -t x dE/dt: the t_a part of dE/dt_a and the t_b part of dE/dt_b drop out.
+  r.torqueA = -(sAs * ta.cross(r0) + sBs * ta.cross(tb));
+  r.torqueB = -(sB * tb.cross(r0) + sBs * tb.cross(ta));
   return r;
+}
+
+ContactPairResult tableQuadrature(const SegmentLineTable& table, const QuadratureRule& rule, double farCutDistance,
+                                  const Segment& a, const Segment& b) {
+  return segmentQuadrature(rule, a, b, table.hCut(), table.uCut(), farCutDistance,
+                           [&](double h, double u0, double* dh, double* du) {
+                             const double d = table.eval(h, std::abs(u0), dh, du);  // D is even in u0
+                             if (u0 < 0.0) *du = -*du;
+                             return d;
+                           });
+}
+}  // namespace
+
+ContactPairResult anisotropicVdw(const TubePairPotential& potential, const QuadratureRule& rule,
+                                 const Segment& a, const Segment& b) {
+  const double lb = b.halfLength, dc = potential.cutoffDistance();
+  return segmentQuadrature(rule, a, b, dc, lb + dc, farCut(potential), [&](double h, double u0, double* dh, double* du) {
+    // D = H(h, lo) - H(h, hi), lo = -lb - u0, hi = lb - u0 (d lo/d u0 = d hi/d u0 = -1).
+    double hLo, uLo, hHi, uHi;
+    const double d = potential.lineIntegral(h, -lb - u0, &hLo, &uLo) - potential.lineIntegral(h, lb - u0, &hHi, &uHi);
+    *dh = hLo - hHi, *du = uHi - uLo;
+    return d;
+  });
+}
+
+AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double halfLengthB, int quadraturePoints)
+    : potential(&p), table(p, halfLengthB), rule(gaussLegendre(quadraturePoints)) {}
+
+ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b) {
+  if (b.halfLength != k.table.halfLength()) return anisotropicVdw(*k.potential, k.rule, a, b);
+  return tableQuadrature(k.table, k.rule, farCut(*k.potential), a, b);
+}
+
+AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double halfLengthA, double halfLengthB,
+                                           double quadratureTolerance)
+    : potential(&p), table(p, halfLengthB) {
+  const QuadratureChoice c = quadraturePointsForTolerance(p, table, halfLengthA, quadratureTolerance);
+  rule = gaussLegendre(c.points);
+  sampledError = c.worstError;
+}
+
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, double la, double lb,
+                                              double tolerance) {
+  return quadraturePointsForTolerance(potential, SegmentLineTable(potential, lb), la, tolerance);
+}
+
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, const SegmentLineTable& table,
+                                              double la, double tolerance) {
+  const double lb = table.halfLength();
+  const double cut = farCut(potential), scale = std::abs(potential.wellDepthPerLength()) * 2.0 * la;
+  const double dEq = potential.equilibriumDistance(), pi = 3.14159265358979323846;
+  // The sample: b crossing a (along x) at axis distance d (normal y), axis turned by t in the
+  // x-z plane and tilted by psi towards a, shifted along a by xa and along its own axis by xb;
+  // and b beyond a's end on a's line (end-on).
+  std::vector<std::pair<Segment, Segment>> sample;
+  const Segment a{Vec3::Zero(), Vec3::UnitX(), la};
+  for (int deg = 0; deg <= 90; deg += 15)
+    for (double psi : {0.0, 0.1})
+      for (double gap : {-0.04, 0.0, 0.1, 0.3, 0.6})
+        for (double xa : {0.0, 0.5, 1.0, 1.5})
+          for (double xb : {0.0, 0.5, 1.0}) {
+            const double t = deg * pi / 180.0;
+            const Vec3 tb = Vec3(std::cos(t), std::sin(t) * std::sin(psi), std::sin(t) * std::cos(psi)).normalized();
+            sample.emplace_back(a, Segment{Vec3(xa * la, dEq + gap, 0.0) + xb * lb * tb, tb, lb});
+          }
+  for (double end : {0.3, 0.6, 1.0}) sample.emplace_back(a, Segment{Vec3(la + end + lb, 0.0, 0.0), Vec3::UnitX(), lb});
+  const QuadratureRule reference = gaussLegendre(64);
+  std::vector<double> exact;
+  for (const auto& [sa, sb] : sample) exact.push_back(tableQuadrature(table, reference, cut, sa, sb).energy);
+  QuadratureChoice choice;
+  for (int n = 2; n <= kMaxPoints; ++n) {
+    const QuadratureRule rule = gaussLegendre(n);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < sample.size(); ++k)
+      worst = std::max(worst, std::abs(tableQuadrature(table, rule, cut, sample[k].first, sample[k].second).energy - exact[k]) /
+                                  std::max(scale, std::abs(exact[k])));
+    choice = {n, worst};
+    if (choice.worstError <= tolerance) break;
+  }
+  return choice;
 }
 
 IsotropicVdw::IsotropicVdw(const TubePairPotential& potential, double la, double lb) {

@@ -3,13 +3,18 @@
 // coarse-grained tube potential (tube_potential.hpp, docs/mdem-contacts.md).
 //
 // Anisotropic form: each element is its axis segment; the energy is
-//   E = \int_{-la}^{la} ds [H(h(s), a(s)) - H(h(s), b(s))]
+//   E = \int_{-la}^{la} ds [H(h(s), a(s)) - H(h(s), b(s))] = \int_{-la}^{la} ds D(h(s), u0(s))
 // where, for the point p(s) = x_a + s t_a, h is its distance from the axis line of b and
 // [a, b] = [-lb - u0, lb - u0] the extent of segment b relative to the foot point (u0 the axial
-// coordinate of p along b). The integral along b is exact (table H); along a it is a
-// Gauss-Legendre rule. Crossed segments feel an aligning moment (the energy is lowest when
-// aligned); a segment sliding along a straight chain of segments sees no corrugation, because the
-// inner integrals of consecutive segments add up to the integral along the whole chain.
+// coordinate of p along b). The integral along b is exact (table H, or the table D of the whole
+// segment, segment_line_table.hpp); along a it is a Gauss-Legendre rule. Crossed segments feel an
+// aligning moment (the energy is lowest when aligned); a segment sliding along a straight chain of
+// segments sees no corrugation, because the inner integrals of consecutive segments add up to the
+// integral along the whole chain.
+//
+// A pair whose axis segments are farther apart than the cut-off d_c plus three table steps returns
+// zero without quadrature: there every table cell the quadrature could touch has zero node data,
+// so the early out returns exactly what the quadrature would (no jump at its boundary).
 //
 // Isotropic form: a central pair potential U(r) of the centre distance r, U(r) = the anisotropic
 // energy of the two segments parallel and side by side at axis distance r (tabulated). No moment.
@@ -19,6 +24,7 @@
 #include <vector>
 
 #include "mdem/contacts/quadrature.hpp"
+#include "mdem/contacts/segment_line_table.hpp"
 #include "mdem/contacts/tube_potential.hpp"
 #include "mdem/quaternion.hpp"
 
@@ -36,9 +42,48 @@ struct ContactPairResult {
   Vec3 forceB = Vec3::Zero(), torqueB = Vec3::Zero();
 };
 
-// Anisotropic kernel; the quadrature runs along a (`rule` on [-1, 1]).
+// Anisotropic kernel; the quadrature runs along a (`rule` on [-1, 1]); three lookups of H per point.
 ContactPairResult anisotropicVdw(const TubePairPotential& potential, const QuadratureRule& rule,
                                  const Segment& a, const Segment& b);
+
+// Everything the anisotropic kernel needs for one ordered pair of element kinds (quadrature side a
+// of half-length la, partner b of half-length lb), built once per scene (~0.2 s): the table D of
+// b's whole segment (one lookup per quadrature point) and the rule along a.
+struct AnisotropicVdwKernel {
+  AnisotropicVdwKernel(const TubePairPotential& potential, double halfLengthB, int quadraturePoints);
+  // The rule chosen from `quadratureTolerance` for quadrature elements of half-length la
+  // (quadraturePointsForTolerance below, on this kernel's table).
+  AnisotropicVdwKernel(const TubePairPotential& potential, double halfLengthA, double halfLengthB,
+                       double quadratureTolerance);
+  const TubePairPotential* potential;
+  SegmentLineTable table;
+  QuadratureRule rule;
+  double sampledError = 0.0;  // with a tolerance: the chosen rule's worst sampled error
+};
+
+// The same energy as the kernel above with the same rule (to round-off when lb is a whole number
+// of table steps); a b of another half-length than the kernel's table falls back to it.
+ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& kernel, const Segment& a, const Segment& b);
+
+// The number of Gauss points along a chosen once per pair of element kinds from a tolerance (so a
+// pair never changes its rule between steps and the energy stays continuous): the smallest n in
+// [2, 48] whose energy error against a 64-point rule, over a fixed sample of pair geometries
+// (crossing angles 0-90 degrees, tilted towards each other or not, wall gaps from the repulsive
+// wall to the switch, offsets along both axes up to the ends, end-on), stays below `tolerance`
+// times max(|Phi_eq| 2 la, |E|): the contact energy scale (two parallel segments side by side at
+// the equilibrium distance), or the pair's own energy where it is larger (deep in the wall).
+// `worstError` is the largest sampled error of the chosen n in that unit (above `tolerance` when
+// even 48 points miss it; tolerances below 1e-4 are refused by the scene reader). The bound is empirical:
+// geometries outside the sample are checked in tests/mdem/test_vdw_table_kernel.cpp.
+struct QuadratureChoice {
+  int points = 0;
+  double worstError = 0.0;
+};
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, double halfLengthA,
+                                              double halfLengthB, double tolerance);
+// The same on a table already built for the partner half-length.
+QuadratureChoice quadraturePointsForTolerance(const TubePairPotential& potential, const SegmentLineTable& table,
+                                              double halfLengthA, double tolerance);
 
 // Isotropic kernel U(r), tabulated for one pair of element lengths.
 class IsotropicVdw {

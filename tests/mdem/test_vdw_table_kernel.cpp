@@ -1,0 +1,250 @@
+// The fast paths of the anisotropic vdW contact (docs/mdem-contacts.md, "Cost of one contact"):
+// the one-lookup table D of a whole segment against the three-lookup line integral H, its forces
+// against finite differences, the far-pair early out (exact: the quadrature it skips returns
+// exactly zero), and the quadrature count chosen from a tolerance (once per pair of kinds).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "contact_fixture.hpp"
+#include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/contact_file.hpp"
+#include "mdem/scene_file.hpp"
+
+namespace mesochain::mdem {
+namespace {
+
+using namespace testing;
+
+constexpr double kHalf = 0.5 * kSegmentLength;
+
+const AnisotropicVdwKernel& tableKernel(int points) {
+  static const AnisotropicVdwKernel k8(tubePotential(), kHalf, 8);
+  static const AnisotropicVdwKernel k12(tubePotential(), kHalf, 12);
+  return points == 8 ? k8 : k12;
+}
+
+Segment seg(const Vec3& c, const Vec3& axis, double half = kHalf) { return {c, axis.normalized(), half}; }
+
+// A spread of pair geometries: crossed at 0-90 degrees, on the wall, in the well, in the tail,
+// offset along both axes, end-on, tilted out of the contact plane.
+std::vector<std::pair<Segment, Segment>> geometries() {
+  const double d = tubePotential().equilibriumDistance();
+  std::vector<std::pair<Segment, Segment>> out;
+  const Segment a = seg(Vec3(0.1, -0.2, 0.3), Vec3(1.0, 0.2, -0.1));
+  const Vec3 n = a.axis.unitOrthogonal(), m = a.axis.cross(n);
+  for (double theta : {0.0, 0.3, 0.7854, 1.2, 1.5708})
+    // (Not exactly at d_eq: it lies on a table node, where the C1 bicubic's second derivative
+    // jumps and a central difference of the energy is off by O(eps); the forces are still the
+    // exact derivative on either side.)
+    for (double extra : {-0.05, 0.0013, 0.15, 0.6, 1.0})
+      for (double shift : {0.0, 0.7, 1.6, 2.4}) {
+        const Vec3 tb = std::cos(theta) * a.axis + std::sin(theta) * (0.9 * m + 0.1 * n).normalized();
+        out.emplace_back(a, seg(a.centre + (d + extra) * n + shift * a.axis - 0.3 * shift * tb, tb));
+      }
+  // End-on: b continues a's line beyond its end.
+  out.emplace_back(a, seg(a.centre + 2.3 * a.axis, a.axis));
+  return out;
+}
+
+TEST(MdemVdwTableKernel, EqualsTheLineIntegralKernel) {
+  // lb = 1 nm is 200 table steps: the interpolant of D is the difference of the H interpolants.
+  const QuadratureRule rule = gaussLegendre(8);
+  const double scale = std::abs(tubePotential().wellDepthPerLength()) * kSegmentLength;
+  int interacting = 0;
+  for (const auto& [a, b] : geometries()) {
+    const ContactPairResult line = anisotropicVdw(tubePotential(), rule, a, b);
+    const ContactPairResult table = anisotropicVdw(tableKernel(8), a, b);
+    interacting += line.energy != 0.0;
+    EXPECT_NEAR(table.energy, line.energy, 1e-11 * scale);
+    const double fs = 1e-9 * (line.forceA.norm() + line.torqueA.norm() + line.torqueB.norm() + 1.0);
+    EXPECT_LT((table.forceA - line.forceA).norm(), fs);
+    EXPECT_LT((table.forceB - line.forceB).norm(), fs);
+    EXPECT_LT((table.torqueA - line.torqueA).norm(), fs);
+    EXPECT_LT((table.torqueB - line.torqueB).norm(), fs);
+  }
+  EXPECT_GT(interacting, 60);  // the comparison is not among zeros
+}
+
+TEST(MdemVdwTableKernel, OtherPartnerLengthFallsBackToTheLineKernel) {
+  const QuadratureRule rule = gaussLegendre(8);
+  const double d = tubePotential().equilibriumDistance();
+  const Segment a = seg(Vec3::Zero(), Vec3::UnitX()), b = seg(Vec3(0.3, d, 0.1), Vec3(1, 0, 1), 0.7);
+  const ContactPairResult table = anisotropicVdw(tableKernel(8), a, b);
+  EXPECT_LT(table.energy, 0.0);
+  EXPECT_EQ(table.energy, anisotropicVdw(tubePotential(), rule, a, b).energy);
+}
+
+TEST(MdemVdwTableKernel, MatchesSurfaceQuadratureLikeTheLineKernel) {
+  // The rows of tests/data/mdem/vdw_vs_surface_quadrature.csv, with the table kernel.
+  const double dEq = tubePotential().equilibriumDistance();
+  std::ifstream in(std::string(MESOCHAIN_TEST_DATA) + "/mdem/vdw_vs_surface_quadrature.csv");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int cases = 0;
+  const Segment a = seg(Vec3::Zero(), Vec3::UnitX());
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    double extra, theta, offset, tolerance;
+    char c;
+    std::istringstream row(line);
+    row >> extra >> c >> theta >> c >> offset >> c >> tolerance;
+    const Segment b = seg(Vec3(offset, dEq + extra, 0.0), Vec3(std::cos(theta), 0.0, std::sin(theta)));
+    const double model = anisotropicVdw(tableKernel(12), a, b).energy;
+    const double ref = surfaceReferenceEnergy(a, b, kTubeRadius);
+    EXPECT_LT(100.0 * std::abs(model - ref) / std::abs(ref), tolerance) << line;
+    ++cases;
+  }
+  EXPECT_EQ(cases, 8);
+}
+
+// Forces and torques of the table kernel against central differences of its energy.
+TEST(MdemVdwTableKernel, ForcesAndTorquesAreMinusEnergyGradient) {
+  const double eps = 1e-6;
+  int geometry = -1;
+  for (const auto& [a0, b0] : geometries()) {
+    SCOPED_TRACE(++geometry);
+    const ContactPairResult r = anisotropicVdw(tableKernel(8), a0, b0);
+    if (r.energy == 0.0) continue;
+    // Scales of the comparison: the force, and for torques the moment of that force at the end of
+    // the element (parallel pairs have no torque but a force), with the round-off floor of a
+    // central difference of E (|E| u / eps = 1e-10 |E|, here 1e-9 |E|): the end-on pair has
+    // |E| ~ 1e4 zJ and neither torque nor lateral force.
+    const double floor = 1e-3 + 1e-4 * std::abs(r.energy);
+    const double fs = r.forceA.norm() + floor, ts = r.torqueA.norm() + r.torqueB.norm() + kHalf * fs;
+    auto energy = [](const Segment& a, const Segment& b) { return anisotropicVdw(tableKernel(8), a, b).energy; };
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 e = eps * Vec3::Unit(k);
+      Segment ap = a0, am = a0, bp = b0, bm = b0;
+      ap.centre += e, am.centre -= e, bp.centre += e, bm.centre -= e;
+      EXPECT_NEAR(r.forceA[k], -(energy(ap, b0) - energy(am, b0)) / (2 * eps), 1e-5 * fs);
+      EXPECT_NEAR(r.forceB[k], -(energy(a0, bp) - energy(a0, bm)) / (2 * eps), 1e-5 * fs);
+      // Rotation by phi = +-eps e_k about the element's centre.
+      ap = am = a0, bp = bm = b0;
+      ap.axis = rotate(expMap(e), a0.axis), am.axis = rotate(expMap(-e), a0.axis);
+      bp.axis = rotate(expMap(e), b0.axis), bm.axis = rotate(expMap(-e), b0.axis);
+      EXPECT_NEAR(r.torqueA[k], -(energy(ap, b0) - energy(am, b0)) / (2 * eps), 1e-5 * ts);
+      EXPECT_NEAR(r.torqueB[k], -(energy(a0, bp) - energy(a0, bm)) / (2 * eps), 1e-5 * ts);
+    }
+    EXPECT_LT((r.forceA + r.forceB).norm(), 1e-12 * fs);
+    const Vec3 moment = a0.centre.cross(r.forceA) + b0.centre.cross(r.forceB) + r.torqueA + r.torqueB;
+    EXPECT_LT(moment.norm(), 1e-9 * (fs * (a0.centre.norm() + b0.centre.norm()) + ts));
+  }
+}
+
+// The early out (closest axis distance >= d_c + 3 steps: no quadrature) skips only quadratures
+// that return exactly zero: between d_c + sqrt(5) steps and the early-out distance the full
+// quadrature runs and must give exactly 0, so the energy has no jump at the early-out boundary.
+TEST(MdemVdwTableKernel, FarPairEarlyOutSkipsOnlyExactZeros) {
+  const TubePairPotential& p = tubePotential();
+  const double dc = p.cutoffDistance(), step = p.gridStep(), farCut = dc + 3.0 * step;
+  const QuadratureRule rule = gaussLegendre(8);
+  const Segment a = seg(Vec3::Zero(), Vec3::UnitX());
+  int evaluated = 0, nonzeroInside = 0;
+  for (double theta : {0.0, 0.4, 1.5708})
+    for (double endOn : {0.0, 1.0}) {
+      // endOn = 0: b crosses above a's middle (distance along y); 1: b beyond a's end (along x).
+      for (double dist = dc - 0.02; dist <= farCut + 0.01; dist += 2.5e-4) {
+        const Vec3 tb = endOn > 0 ? Vec3(std::cos(theta), std::sin(theta), 0.0) : Vec3(std::cos(theta), 0.0, std::sin(theta));
+        const Vec3 centre = endOn > 0 ? Vec3(kHalf + dist, 0, 0) + kHalf * tb : Vec3(0, dist, 0);
+        const Segment b = seg(centre, tb);
+        double sa, sb;
+        closestPoints(a, b, &sa, &sb);
+        const double gap = (a.centre + sa * a.axis - b.centre - sb * b.axis).norm();
+        const double line = anisotropicVdw(p, rule, a, b).energy, table = anisotropicVdw(tableKernel(8), a, b).energy;
+        if (gap >= dc + 2.3 * step) {
+          EXPECT_EQ(line, 0.0) << theta << " " << endOn << " " << gap;
+          EXPECT_EQ(table, 0.0) << theta << " " << endOn << " " << gap;
+          evaluated += gap < farCut;
+        } else if (gap < dc - 0.01) {
+          nonzeroInside += line != 0.0;
+        }
+      }
+    }
+  EXPECT_GT(evaluated, 10);      // the band below the early out was sampled
+  EXPECT_GT(nonzeroInside, 10);  // and the sweep starts where the contact is felt
+}
+
+TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
+  const TubePairPotential& p = tubePotential();
+  const double scale = std::abs(p.wellDepthPerLength()) * kSegmentLength;
+  int previous = 0;
+  for (double tol : {3e-2, 1e-2, 1e-3, 1e-4}) {
+    const QuadratureChoice c = quadraturePointsForTolerance(p, kHalf, kHalf, tol);
+    std::printf("tolerance %.0e: %d points, worst sampled error %.3g\n", tol, c.points, c.worstError);
+    EXPECT_LE(c.worstError, tol);
+    const AnisotropicVdwKernel k(p, kHalf, kHalf, tol);  // the same choice, built into a kernel
+    EXPECT_EQ(static_cast<int>(k.rule.x.size()), c.points);
+    EXPECT_EQ(k.sampledError, c.worstError);
+    EXPECT_GE(c.points, previous);
+    previous = c.points;
+    // The sampled bound checked on geometries outside the sample (other angles, tilted out of
+    // the contact plane, end-on): the error stays within 3x the tolerance.
+    const QuadratureRule rule = gaussLegendre(c.points), reference = gaussLegendre(64);
+    double worst = 0.0;
+    int gi = 0, worstAt = -1;
+    for (const auto& [a, b] : geometries()) {
+      const double exact = anisotropicVdw(p, reference, a, b).energy;
+      const double err = std::abs(anisotropicVdw(p, rule, a, b).energy - exact) / std::max(scale, std::abs(exact));
+      if (err > worst) worst = err, worstAt = gi;
+      ++gi;
+    }
+    std::printf("  off-sample worst %.3g at geometry %d (E = %.4g)\n", worst, worstAt,
+                anisotropicVdw(p, reference, geometries()[worstAt].first, geometries()[worstAt].second).energy);
+    EXPECT_LE(worst, 3.0 * tol) << tol;
+  }
+}
+
+TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsValidated) {
+  Scene s = tubeScene({"bonds", "vdw_contact"});
+  s.contacts.vdw.quadratureTolerance = 1e-3;
+  EXPECT_NO_THROW(validateContactSpec(s));
+  for (double bad : {-1e-3, 0.5, std::nan("")}) {
+    s.contacts.vdw.quadratureTolerance = bad;
+    try {
+      validateContactSpec(s);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("quadrature_tolerance"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// The scene key: read from [vdw_contact]; with quadrature_points too, or out of range, an InputError
+// naming it.
+TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsRead) {
+  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
+  ASSERT_TRUE(in.good());
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string example = buffer.str(), anchor = "cutoff_gap_nm = 1.2\n";
+  ASSERT_NE(example.find(anchor), std::string::npos);
+  const std::string path = (std::filesystem::temp_directory_path() / "mdem-quadrature-tolerance.toml").string();
+  auto withKeys = [&](const std::string& keys) {
+    std::string text = example;
+    text.insert(text.find(anchor) + anchor.size(), keys);
+    std::ofstream(path) << text;
+    return path;
+  };
+  EXPECT_EQ(loadScene(withKeys("")).contacts.vdw.quadratureTolerance, 0.0);
+  EXPECT_EQ(loadScene(withKeys("quadrature_tolerance = 0.01\n")).contacts.vdw.quadratureTolerance, 0.01);
+  for (const char* bad : {"quadrature_tolerance = 0.01\nquadrature_points = 6\n", "quadrature_tolerance = 0.5\n",
+                          "quadrature_tolerance = 0.0\n"}) {
+    try {
+      loadScene(withKeys(bad));
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("quadrature_tolerance"), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
