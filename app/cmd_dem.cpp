@@ -3,12 +3,14 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "mdem/contacts/film_statistics.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
 
@@ -46,10 +48,19 @@ Command makeDemCommand() {
   c.run = [opt] {
     const mdem::Scene scene = mdem::loadScene(opt->scene);
     const std::string dir = opt->outputDir.empty() ? scene.output.directory : opt->outputDir;
+    // A generated film ([network]): its report, printed now and written as film.json after the run.
+    std::optional<mdem::FilmStatistics> film;
+    if (!scene.filmSize.isZero()) {
+      mdem::FilmStatisticsOptions fo;
+      fo.excludeWithin = scene.contacts.excludeWithin;
+      film = mdem::filmStatistics(scene, fo);
+      std::cout << mdem::formatFilmStatistics(*film);
+    }
     std::function<void(double)> progress;
     if (!opt->quiet) progress = drawProgress;
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress);
     if (!opt->quiet) std::fprintf(stderr, "\n");
+    if (film) mdem::writeFilmStatisticsJson(*film, (std::filesystem::path(dir) / "film.json").string());
     const mdem::Energies& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",
