@@ -27,6 +27,7 @@ double normal(std::mt19937_64& g) {
 constexpr int kSelfExclude = 3;    // elements along one tube closer than this are not checked
 constexpr int kSettleRounds = 30;
 constexpr double kHeightSlack = 1e-9;  // nm added to supports against rounding
+constexpr double kRestTolerance = 1e-3;  // nm: a laid tube lies at most this above its lowest clear profile
 
 // The periodic generation domain [0, px) x [0, py) with a grid of columns for the supports.
 class Domain {
@@ -166,8 +167,9 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
   double zLow = std::numeric_limits<double>::infinity(), zHigh = -zLow;
   auto thicknessNow = [&] { return laid.empty() ? 0.0 : zHigh - zLow + 2.0 * r; };
 
+  long hovering = 0;
   TubePath path;
-  std::vector<double> zeta(n + 1), required(n + 1), support(n);
+  std::vector<double> zeta(n + 1), required(n + 1), need(n + 1), settledZeta, support(n);
   std::vector<Vec3> centre, axis;
   for (int tube = 0;; ++tube) {
     if (spec.tubes > 0 && tube == spec.tubes) break;
@@ -188,6 +190,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
       }
       std::fill(zeta.begin(), zeta.end(), 0.0);
       std::fill(required.begin(), required.end(), 0.0);
+      bool haveSettled = false;
       for (int round = 0; round < kSettleRounds && !placed; ++round) {
         placeTube(path, zeta, l, centre, axis);
         for (int k = 0; k < n; ++k) {
@@ -207,15 +210,30 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
         }
         bool settled = true;
         for (int e = 0; e <= n; ++e) {
-          const double need = std::max(e > 0 ? support[e - 1] : 0.0, e < n ? support[e] : 0.0);
-          if (zeta[e] < need) settled = false;
-          required[e] = std::max(required[e], need);
+          need[e] = std::max(e > 0 ? support[e - 1] : 0.0, e < n ? support[e] : 0.0);
+          settled &= zeta[e] >= need[e];
         }
         if (settled) {
-          placed = true;
-          break;
+          // Clear of everything: laid if it also rests (no lower profile clears it here);
+          // otherwise remember it and try the lower profile.
+          haveSettled = true, settledZeta = zeta;
+          const std::vector<double> lower = drapeEnvelope(need, profile);
+          double hover = 0.0;
+          for (int e = 0; e <= n; ++e) hover = std::max(hover, zeta[e] - lower[e]);
+          if (hover <= kRestTolerance) placed = true;
+          else zeta = lower, required = need;
+          continue;
         }
+        // Raise: monotone from round 1 on (round 0 saw the tube flat on the floor, away from
+        // where it lies), which makes the loop settle.
+        for (int e = 0; e <= n; ++e) required[e] = round == 1 ? need[e] : std::max(required[e], need[e]);
         zeta = drapeEnvelope(required, profile);
+      }
+      if (!placed && haveSettled) {  // the last profile that cleared everything
+        zeta = settledZeta;
+        placeTube(path, zeta, l, centre, axis);
+        placed = true;
+        ++hovering;
       }
       if (!placed) continue;
       // Lay it; a wavy tube must also clear itself beyond kSelfExclude elements along it.
@@ -262,6 +280,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
   result.tubesLaid = static_cast<int>(anchor.size());
   result.elementsLaid = static_cast<long>(laid.size());
   result.domainThickness = thicknessNow();
+  result.hoveringTubes = hovering;
 
   // The scene: unwrapped positions along each tube, orientations carried along it.
   Bodies straight;  // two elements of the straight tube, for the bond template

@@ -18,10 +18,13 @@
 //      axes), and at least the floor 0; required end heights r_e = max(S_{e-1}, S_e) (an element
 //      whose two ends are at least S_k clears everything, tilted or not);
 //   3. if the current end heights are >= r_e everywhere the tube is laid; otherwise the end
-//      heights become the draped envelope of max(r, previous r) (drapeEnvelope: slope at most
+//      heights become the draped envelope of r (from round 1 on the maximum of r over the rounds,
+//      which makes the loop settle) (drapeEnvelope: slope at most
 //      maxSlope, bend per bond at most bendPerElement at a crest) and the tube is placed again
 //      (the in-plane spacing shrinks where the tube climbs, so supports move: hence the loop).
-// A tube that does not settle in 30 rounds, or (wavy tubes) comes closer than minimumGap to
+// A clear profile is lowered again onto the supports at its new place until it rests there
+// (within 1e-3 nm); after 30 rounds the last clear profile is kept (counted as hovering). A
+// tube that has no clear profile after 30 rounds, or (wavy tubes) comes closer than minimumGap to
 // itself beyond 3 elements along it, is redrawn (attemptsPerTube times at most).
 //
 // Boundaries. Periodic: the domain is the film, periodic along x and y; a tube continues across
@@ -63,7 +66,7 @@ struct DepositionSpec {
   double alignmentAngle = 0.0;       // rad from x, in plane
   double alignmentSpread = 0.0;      // rad, standard deviation of the aligned headings
   double maxSlope = 10.0 * 3.14159265358979323846 / 180.0;       // rad
-  double bendPerElement = 2.0 * 3.14159265358979323846 / 180.0;  // rad
+  double bendPerElement = 5.0 * 3.14159265358979323846 / 180.0;  // rad
   double minimumGap = 0.3;           // nm, wall to wall: the rest gap and the least gap
   RestShape restShape = RestShape::Straight;
   std::uint64_t seed = 1;
@@ -76,6 +79,8 @@ struct DepositionResult {
   long elementsLaid = 0;          // on the generation domain (before any cut)
   double domainThickness = 0.0;   // nm, z extent of centres + 2R on the generation domain
   int filaments = 0;              // in the scene (cut tubes count each piece)
+  long hoveringTubes = 0;         // laid on a clear profile that did not settle onto its supports
+                                  // within the rounds (it lies above them, never into them)
 };
 
 // Appends the film's elements and bonds to `scene` (types must exist) and sets scene.filmSize

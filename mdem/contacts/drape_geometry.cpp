@@ -33,9 +33,11 @@ double pieceMaximum(double t0, double t1, double alpha, double beta, double gamm
   const double m = alpha + bz * bz;
   if (m > kTiny && alpha > kTiny) {
     const double c = (beta * beta - bz * bz * (d2 - gamma)) / m;
+    // disc = 0 is the common case bz = 0 (Q's vertex); rounding may make it slightly negative.
+    // Evaluating F at a point that is not stationary is harmless (F is only maximised).
     const double disc = beta * beta - alpha * c;
-    if (disc >= 0.0) {
-      const double sq = std::sqrt(disc);
+    {
+      const double sq = std::sqrt(std::max(0.0, disc));
       for (double t : {(-beta - sq) / alpha, (-beta + sq) / alpha})
         if (t > t0 && t < t1) best = std::max(best, f(t));
     }
