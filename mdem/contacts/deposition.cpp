@@ -27,7 +27,7 @@ double normal(std::mt19937_64& g) {
 constexpr int kSelfExclude = 3;    // elements along one tube closer than this are not checked
 constexpr int kSettleRounds = 30;
 constexpr double kHeightSlack = 1e-9;  // nm added to supports against rounding
-constexpr double kRestTolerance = 1e-3;  // nm: a laid tube lies at most this above its lowest clear profile
+constexpr double kRestTolerance = 0.02;  // nm: a laid tube lies at most this above its lowest clear profile
 
 // The periodic generation domain [0, px) x [0, py) with a grid of columns for the supports.
 class Domain {

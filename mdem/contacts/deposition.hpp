@@ -23,7 +23,7 @@
 //      maxSlope, bend per bond at most bendPerElement at a crest) and the tube is placed again
 //      (the in-plane spacing shrinks where the tube climbs, so supports move: hence the loop).
 // A clear profile is lowered again onto the supports at its new place until it rests there
-// (within 1e-3 nm); after 30 rounds the last clear profile is kept (counted as hovering). A
+// (within 0.02 nm: its crests at the contact gap to that precision); after 30 rounds the last clear profile is kept (counted as hovering). A
 // tube that has no clear profile after 30 rounds, or (wavy tubes) comes closer than minimumGap to
 // itself beyond 3 elements along it, is redrawn (attemptsPerTube times at most).
 //
