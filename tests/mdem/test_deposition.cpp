@@ -304,6 +304,22 @@ TEST(MdemDeposition, ThicknessTargetStopsTheDeposition) {
   EXPECT_LT(filmStatistics(deposit(fewer)).thickness, 6.0);
 }
 
+TEST(MdemDeposition, CellListCheckFindsATubeMeetingItsOwnImage) {
+  Scene s = tubeScene({"bonds"});
+  addTube(s, 10, Vec3(1.0, 5.0, 0.0), Vec3::UnitX());  // centres 1..19, ends at 0 and 20
+  s.periodic.periodic = {true, false, false};
+  s.periodic.length = Vec3(21.0, 0.0, 0.0);  // the last end is 1 nm from the first one's image
+  EXPECT_NO_THROW(checkNoOverlaps(s, kGap));  // the O(n^2) check sees different tubes only
+  try {
+    checkNoOverlapsCellList(s, kGap, 3);
+    ADD_FAILURE() << "no overlap found";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("elements 0 and 9"), std::string::npos) << e.what();
+  }
+  s.periodic.length.x() = 23.0;  // 3 nm of box between the ends: gap 3 - 2R > 0.3
+  EXPECT_NO_THROW(checkNoOverlapsCellList(s, kGap, 3));
+}
+
 std::string writeScene(const std::string& name, const std::string& networkKeys, const std::string& extra = "") {
   const std::string path = (std::filesystem::temp_directory_path() / ("mdem-deposition-" + name + ".toml")).string();
   std::ofstream(path) << R"(format = 1
