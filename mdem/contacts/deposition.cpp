@@ -190,7 +190,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
       }
       std::fill(zeta.begin(), zeta.end(), 0.0);
       std::fill(required.begin(), required.end(), 0.0);
-      bool haveSettled = false;
+      bool haveSettled = false, hovered = false;
       for (int round = 0; round < kSettleRounds && !placed; ++round) {
         placeTube(path, zeta, l, centre, axis);
         for (int k = 0; k < n; ++k) {
@@ -232,8 +232,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
       if (!placed && haveSettled) {  // the last profile that cleared everything
         zeta = settledZeta;
         placeTube(path, zeta, l, centre, axis);
-        placed = true;
-        ++hovering;
+        placed = hovered = true;
       }
       if (!placed) continue;
       // Lay it; a wavy tube must also clear itself beyond kSelfExclude elements along it.
@@ -264,6 +263,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
       for (int k = 0; k < n; ++k) zLow = std::min(zLow, centre[k].z()), zHigh = std::max(zHigh, centre[k].z());
       tubeStart.push_back(static_cast<int>(laid.size()));
       anchor.push_back(centre[0]);
+      hovering += hovered;
     }
     if (!placed)
       throw InputError(src, spec.countKey,
