@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "common/errors.hpp"
+#include "mdem/contacts/film_statistics.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
 
@@ -58,6 +60,15 @@ Command makeDemCommand() {
     // Made and checked before the run, not found unwritable at the first output.
     prepareOutputFolder(dir, opt->outputDir.empty() ? opt->scene : "<command line>",
                         opt->outputDir.empty() ? "key output.directory" : "option --output-dir");
+    // A generated film ([network]): its report, printed and written as film.json before the run.
+    std::optional<mdem::FilmStatistics> film;
+    if (!scene.filmSize.isZero()) {
+      mdem::FilmStatisticsOptions fo;
+      fo.excludeWithin = scene.contacts.excludeWithin;
+      film = mdem::filmStatistics(scene, fo);
+      std::cout << mdem::formatFilmStatistics(*film);
+      mdem::writeFilmStatisticsJson(*film, (std::filesystem::path(dir) / "film.json").string());
+    }
     std::function<void(double)> progress;
     if (!opt->quiet) progress = drawProgress;
     if (opt->resume && opt->overwrite)

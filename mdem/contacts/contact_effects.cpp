@@ -143,6 +143,17 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
       TypePair& tp = types_[a * typeCount_ + b];
       tp.potential = std::make_unique<TubePairPotential>(ps);
       if (!spec_.anisotropic) tp.isotropic = std::make_unique<IsotropicVdw>(*tp.potential, 0.5 * ta.length, 0.5 * tb.length);
+      if (spec_.anisotropic) {
+        tp.kernelAgainst.resize(typeCount_);
+        for (const auto& [quad, partner] : {std::pair{&ta, b}, std::pair{&tb, a}}) {
+          if (tp.kernelAgainst[partner]) continue;
+          const double la = 0.5 * quad->length, lb = 0.5 * scene.elementTypes[partner].length;
+          tp.kernelAgainst[partner] =
+              spec_.quadratureTolerance > 0.0
+                  ? std::make_unique<AnisotropicVdwKernel>(*tp.potential, la, lb, spec_.quadratureTolerance)
+                  : std::make_unique<AnisotropicVdwKernel>(*tp.potential, lb, spec_.quadraturePoints);
+        }
+      }
     }
   }
 }
@@ -178,7 +189,7 @@ ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
       face_ ? face_->evaluate(brickFace(so.centre, b.orientation[o], width_[b.type[o]], length_[b.type[o]]),
                               brickFace(si.centre, b.orientation[in], width_[b.type[in]], length_[b.type[in]]))
       : tp.isotropic ? tp.isotropic->evaluate(so.centre, si.centre)
-                                     : anisotropicVdw(*tp.potential, rule_, so, si);
+                                     : anisotropicVdw(*tp.kernelAgainst[b.type[in]], so, si);
   if (!iOuter) std::swap(r.forceA, r.forceB), std::swap(r.torqueA, r.torqueB);
   return r;
 }

@@ -85,6 +85,9 @@ class VdwContactEffect : public Effect {
   struct TypePair {
     std::unique_ptr<TubePairPotential> potential;
     std::unique_ptr<IsotropicVdw> isotropic;
+    // Anisotropic form: the segment kernel of the quadrature element against a partner of each
+    // type (index: the partner's type), with its quadrature points (vdw_contact.hpp).
+    std::vector<std::unique_ptr<AnisotropicVdwKernel>> kernelAgainst;
   };
   const Scene& scene_;
   VdwContactSpec spec_;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/contacts/deposition_file.hpp"
 #include "mdem/contacts/network_generator.hpp"
 #include "mdem/units.hpp"
 
@@ -55,7 +56,10 @@ void validateContactSpec(const Scene& s) {
 void readNetworkTable(const TomlTable& root, Scene& s) {
   if (!root.has("network")) return;
   const TomlTable t = root.table("network");
-  t.allowOnly({"element_type", "bond_type", "size_nm", "tubes", "areal_density_ug_per_cm2", "tube_length_nm",
+  const std::string method = t.string("method", "random");
+  if (method != "random" && method != "deposition") t.fail("method", "\"" + method + "\"", "\"random\" or \"deposition\"");
+  if (method == "deposition") return readDepositionTable(root, t, s);
+  t.allowOnly({"method", "element_type", "bond_type", "size_nm", "tubes", "areal_density_ug_per_cm2", "tube_length_nm",
                "shape", "waviness_deg", "minimum_gap_nm", "seed"});
   auto typeIndex = [&](const auto& types, const char* key) {
     const std::string name = t.string(key);

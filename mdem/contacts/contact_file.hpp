@@ -10,8 +10,9 @@ namespace mesochain::mdem {
 // effect is not listed (or vdw_contact is listed without its table).
 void readContactTables(const TomlTable& root, Scene& s);
 
-// [network]: a random network of tubes (network_generator.hpp) appended to the scene's
-// elements; sets Scene::filmSize. Keys in docs/scene-file.md.
+// [network]: a random network of tubes (method = "random", network_generator.hpp) or a deposited
+// film (method = "deposition", deposition_file.hpp) appended to the scene's elements; sets
+// Scene::filmSize. Keys in docs/scene-file.md.
 void readNetworkTable(const TomlTable& root, Scene& s);
 
 // Range checks shared with scenes built in C++ (throws InputError naming `source` and the key).

@@ -1,0 +1,114 @@
+#include "mdem/contacts/film_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "mdem/contacts/element_pairs.hpp"
+#include "mdem/contacts/neighbour_list.hpp"
+#include "mdem/units.hpp"
+
+namespace mesochain::mdem {
+
+namespace {
+double gapRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
+}  // namespace
+
+FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o) {
+  const Bodies& b = scene.bodies;
+  FilmStatistics f;
+  f.elements = b.size();
+  f.area = scene.filmSize.x() * scene.filmSize.y();
+  f.contactGap = o.contactGap, f.vdwShell = o.vdwShell;
+  if (f.elements == 0 || !(f.area > 0.0)) return f;
+  f.filaments = static_cast<int>(buildTopology(b.size(), scene.bonds, 0, scene.contacts.closedFilaments).filamentSize.size());
+  double rMax = 0.0, volume = 0.0, zMin = b.position[0].z(), zMax = zMin, zSum = 0.0;
+  for (int i = 0; i < f.elements; ++i) {
+    const ElementType& t = scene.elementTypes[b.type[i]];
+    const double r = gapRadius(t);
+    rMax = std::max(rMax, r);
+    f.mass += b.mass[i];
+    volume += units::kPi * (r + o.vdwShell) * (r + o.vdwShell) * t.length;
+    const double z = b.position[i].z();
+    zMin = std::min(zMin, z), zMax = std::max(zMax, z), zSum += z;
+    const Vec3 axis = rotate(b.orientation[i], Vec3::UnitZ());
+    const double h = std::hypot(axis.x(), axis.y());
+    if (h > 1e-12) {
+      const Eigen::Vector2d u(axis.x() / h, axis.y() / h);
+      f.orientation += u * u.transpose();
+    }
+  }
+  f.orientation /= f.elements;
+  double zVar = 0.0;
+  const double zMean = zSum / f.elements;
+  for (int i = 0; i < f.elements; ++i) zVar += (b.position[i].z() - zMean) * (b.position[i].z() - zMean);
+  zVar /= f.elements;
+  f.thickness = zMax - zMin + 2.0 * rMax;
+  f.thicknessUniformSlab = std::sqrt(12.0 * zVar) + 2.0 * rMax;
+  // 1 ag/nm^2 = 1e-18 g / 1e-14 cm^2 = 1e-4 g/cm^2 = 100 ug/cm^2.
+  f.arealDensity = f.mass / f.area * 100.0;
+  // 1 ag/nm^3 = 1e-18 g / 1e-21 cm^3 = 1e3 g/cm^3.
+  f.density = f.mass / (f.area * f.thickness) * 1e3;
+  f.porosity = 1.0 - volume / (f.area * f.thickness);
+  f.contactPairs = static_cast<long>(closePairs(scene, o.contactGap, o.excludeWithin).size());
+  f.contactsPerElement = 2.0 * f.contactPairs / f.elements;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(f.orientation);
+  f.lambda1 = eig.eigenvalues()[1], f.lambda2 = eig.eigenvalues()[0];
+  f.orderParameter = f.lambda1 - f.lambda2;
+  const Eigen::Vector2d d = eig.eigenvectors().col(1);
+  double angle = std::atan2(d.y(), d.x()) * 180.0 / units::kPi;
+  if (angle < 0.0) angle += 180.0;
+  if (angle >= 180.0) angle -= 180.0;
+  f.directorAngleDeg = angle;
+  return f;
+}
+
+std::string formatFilmStatistics(const FilmStatistics& f) {
+  return fmt::format(
+      "film: {} elements in {} filaments over {:.6g} nm^2; thickness {:.4g} nm (centre span + 2R; uniform slab {:.4g} nm), "
+      "areal density {:.4g} ug/cm^2, density {:.4g} g/cm^3, porosity {:.4g} (vdW radius R + {:.3g} nm); "
+      "{:.3g} contacts per element (wall gap < {:.3g} nm); orientation eigenvalues {:.4f}, {:.4f}, order parameter {:.4f}, "
+      "director {:.1f} deg from x\n",
+      f.elements, f.filaments, f.area, f.thickness, f.thicknessUniformSlab, f.arealDensity, f.density, f.porosity, f.vdwShell,
+      f.contactsPerElement, f.contactGap, f.lambda1, f.lambda2, f.orderParameter, f.directorAngleDeg);
+}
+
+void writeFilmStatisticsJson(const FilmStatistics& f, const std::string& path) {
+  nlohmann::ordered_json j;
+  j["elements"] = f.elements;
+  j["filaments"] = f.filaments;
+  j["area_nm2"] = f.area;
+  j["mass_ag"] = f.mass;
+  j["thickness_nm"] = f.thickness;
+  j["thickness_definition"] = "z_max - z_min of the element centres + 2 R_max (outer extent of the tube walls)";
+  j["thickness_uniform_slab_nm"] = f.thicknessUniformSlab;
+  j["areal_density_ug_per_cm2"] = f.arealDensity;
+  j["density_g_per_cm3"] = f.density;
+  j["density_definition"] = "mass / (area * thickness_nm)";
+  j["porosity"] = f.porosity;
+  j["porosity_definition"] = "1 - sum(pi (R + vdw_shell_nm)^2 L) / (area * thickness_nm)";
+  j["vdw_shell_nm"] = f.vdwShell;
+  j["contact_gap_nm"] = f.contactGap;
+  j["contact_pairs"] = f.contactPairs;
+  j["contacts_per_element"] = f.contactsPerElement;
+  j["orientation_tensor"] = {{f.orientation(0, 0), f.orientation(0, 1)}, {f.orientation(1, 0), f.orientation(1, 1)}};
+  j["orientation_eigenvalues"] = {f.lambda1, f.lambda2};
+  j["order_parameter"] = f.orderParameter;
+  j["director_angle_deg"] = f.directorAngleDeg;
+  const std::filesystem::path target(path), tmp = target.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << "\n";
+    if (!out) throw InputError(tmp.string(), "film report", "a file that cannot be written", "a writable output folder");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) throw InputError(target.string(), "film report", "rename failed: " + ec.message(), "a writable output folder");
+}
+
+}  // namespace mesochain::mdem
