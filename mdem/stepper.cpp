@@ -135,6 +135,34 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     return;
   }
   const int blocks = (n + kBlock - 1) / kBlock;
+  if (!fx.withPrepare.empty() || !fx.withFinish.empty()) {
+    // Effects with serial phases (neighbour lists, dissipated work): those run between parallel
+    // regions, one region per step, so that their own parallel loops (the neighbour list's
+    // displacement check and rebuild) use every thread instead of one inside a `single`.
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+    for (int i = 0; i < n; ++i) openStep(s, i, t0, km, h);
+    double t = t0;
+    for (long k = 0; k < steps; ++k) {
+      t += h;
+      for (Effect* e : fx.withPrepare) e->prepare(state, t);
+      const bool last = k + 1 == steps;
+#pragma omp parallel if (n > kParallelThreshold)
+      {
+        for (Effect* e : fx.withItems) {
+          const int items = e->itemCount();
+          const int chunks = (items + kItemChunk - 1) / kItemChunk;
+#pragma omp for schedule(static) nowait
+          for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
+        }
+#pragma omp barrier
+#pragma omp for schedule(static)
+        for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
+      }
+      for (Effect* e : fx.withFinish) e->finish(state, t);
+    }
+    for (long k = 0; k < steps; ++k) state.time += h;
+    return;
+  }
 #pragma omp parallel if (n > kParallelThreshold)
   {
     double t = t0;  // every thread follows the same time sequence
@@ -142,10 +170,6 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
     for (long k = 0; k < steps; ++k) {
       t += h;
-      if (!fx.withPrepare.empty()) {
-#pragma omp single
-        for (Effect* e : fx.withPrepare) e->prepare(state, t);
-      }
       for (Effect* e : fx.withItems) {
         const int items = e->itemCount();
         const int chunks = (items + kItemChunk - 1) / kItemChunk;
@@ -156,10 +180,6 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
       const bool last = k + 1 == steps;
 #pragma omp for schedule(static)
       for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
-      if (!fx.withFinish.empty()) {
-#pragma omp single
-        for (Effect* e : fx.withFinish) e->finish(state, t);
-      }
     }
   }
   for (long k = 0; k < steps; ++k) state.time += h;

@@ -3,12 +3,13 @@
 // (effect.hpp). One step (velocity Verlet + DLM rotation, integrator.hpp):
 //   kick(h/2); constraints(t + h/2); drift(h); t += h; forces(t); kick(h/2); constraints(t).
 // A run of n steps is one parallel region; per step:
-//   [single]    prepare of the effects that have one (e.g. neighbour lists)     -- barrier
 //   [items]     each effect's items, split into chunks between the threads      -- barrier
 //   [elements]  per block of elements: zero, gather every effect in order, clear the constrained
 //               components, kick h/2, constraints; then the next step's kick h/2, constraints,
 //               drift                                                            -- barrier
-//   [single]    finish of the effects that have one (e.g. dissipated work)
+// When an effect has serial phases (prepare: e.g. a neighbour list; finish: e.g. dissipated
+// work), they run between parallel regions, one region per step: their own parallel loops then
+// use every thread.
 // Nothing is allocated per step by the stepper. Forces are summed per element in a fixed order,
 // so the result does not depend on the number of threads.
 //
