@@ -138,7 +138,11 @@ void readFilaments(const TomlTable& root, Scene& s) {
     f.elementType = findType(typeNames(s.elementTypes), t, "element_type");
     f.bondType = findType(typeNames(s.bondTypes), t, "bond_type");
     const long n = t.integer("count");
-    if (n < 1) t.fail("count", std::to_string(n), "at least 1 element");
+    // Element indices are int; a scene holds at most 1e8 elements (about 30 GB of state).
+    constexpr long kMaxElements = 100000000;
+    if (n < 1 || n > kMaxElements - s.bodies.size())
+      t.fail("count", std::to_string(n),
+             fmt::format("1 to {} elements (at most {} in a scene)", kMaxElements - s.bodies.size(), kMaxElements));
     f.count = static_cast<int>(n);
     f.start = t.vec3("start_nm", Vec3::Zero());
     f.direction = t.vec3("direction", Vec3::UnitZ());

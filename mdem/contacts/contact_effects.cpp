@@ -129,6 +129,7 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
     fs.lj = spec_.lj, fs.layerSpacing = spec_.layerSpacing, fs.edgeWidth = spec_.edgeWidth;
     fs.switchGap = spec_.switchGap, fs.cutoffGap = spec_.cutoffGap;
     face_ = std::make_unique<FaceContactModel>(fs);
+    checkInitialOverlaps();
     return;
   }
   for (int a = 0; a < typeCount_; ++a) {
@@ -155,6 +156,36 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
         }
       }
     }
+  }
+  checkInitialOverlaps();
+}
+
+void VdwContactEffect::checkInitialOverlaps() const {
+  // Elements that start inside each other would meet the steep repulsive wall of the contact
+  // and fly apart: tubes whose walls interpenetrate (wall gap < 0 at the closest points of the
+  // axes), bricks whose centres are less than half their mean thickness apart across the face
+  // while their faces overlap in plane.
+  const Bodies& b = scene_.bodies;
+  for (const auto& [i, j] : nb_->list().pairs()) {
+    const ElementType& ta = scene_.elementTypes[b.type[i]];
+    const ElementType& tb = scene_.elementTypes[b.type[j]];
+    const Segment sa = nb_->segment(b, i), sb = nb_->imageNear(b, j, sa.centre);
+    std::string what;
+    if (face_) {
+      const Vec3 d = sb.centre - sa.centre;
+      const Vec3 n = rotate(b.orientation[i], Vec3::UnitX()), w = rotate(b.orientation[i], Vec3::UnitY());
+      if (std::abs(d.dot(n)) < 0.25 * (ta.thickness + tb.thickness) && std::abs(d.dot(w)) < 0.5 * std::max(ta.width, tb.width) &&
+          std::abs(d.dot(sa.axis)) < 0.5 * std::max(ta.length, tb.length))
+        what = fmt::format("bricks {} and {} overlapping (centres {:.3g} nm apart across the face)", i, j, std::abs(d.dot(n)));
+    } else {
+      double u, v;
+      closestPoints(sa, sb, &u, &v);
+      const double gap = (sa.centre + u * sa.axis - sb.centre - v * sb.axis).norm() - ta.radius - tb.radius;
+      if (gap < 0.0) what = fmt::format("tubes {} and {} overlapping (wall gap {:.3g} nm)", i, j, gap);
+    }
+    if (!what.empty())
+      throw InputError(scene_.source, "elements", what,
+                       "elements that do not start inside each other (the contact's repulsion would throw them apart)");
   }
 }
 

@@ -82,6 +82,8 @@ class VdwContactEffect : public Effect {
 
  private:
   ContactPairResult pair(const Bodies& b, int i, int j) const;
+  // InputError naming the elements when two start inside each other.
+  void checkInitialOverlaps() const;
   struct TypePair {
     std::unique_ptr<TubePairPotential> potential;
     std::unique_ptr<IsotropicVdw> isotropic;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
+#include "chain_fixture.hpp"
 #include "contact_fixture.hpp"
 #include "momentum.hpp"
 #include "mdem/contacts/contact_effects.hpp"
@@ -258,6 +259,44 @@ TEST(MdemContactEffects, BadParametersAreClearErrors) {
   s = tubeScene({"bonds", "vdw_contact"});  // the smooth edge must fit on the brick face
   s.elementTypes[0].shape = Shape::Brick, s.elementTypes[0].thickness = 0.68, s.elementTypes[0].width = 1.0;
   expectError(s, "edge_width_nm");
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// Hardening (issue 14): elements that start inside each other are refused by name, not thrown
+// apart by the contact's repulsion.
+TEST(MdemContactEffects, ElementsStartingInsideEachOtherAreAClearError) {
+  using namespace testing;
+  Scene tubes = tubeScene({"bonds", "vdw_contact"});
+  addTube(tubes, 2, Vec3::Zero(), Vec3::UnitX());
+  addTube(tubes, 2, Vec3(1.0, -1.0, 0.5), Vec3::UnitY());  // axes 0.5 nm apart: walls overlap
+  try {
+    Simulation sim(tubes);
+    FAIL() << "overlapping tubes accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("overlapping"), std::string::npos) << e.what();
+  }
+  Scene bricks = filament(1);
+  bricks.bodies.add(0, bricks.elementTypes[0], Vec3::Zero(), Quat{});  // two bricks at one centre
+  bricks.contacts.vdw.lj = carbonLj();
+  bricks.effects = {"vdw_contact"};
+  bricks.run.timeStep = 1e-6;
+  try {
+    Simulation sim(bricks);
+    FAIL() << "bricks at one centre accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bricks 0 and 1 overlapping"), std::string::npos) << e.what();
+  }
+  // Apart at the contact distance: accepted.
+  Scene apart = tubeScene({"bonds", "vdw_contact"});
+  addTube(apart, 2, Vec3::Zero(), Vec3::UnitX());
+  addTube(apart, 2, Vec3(1.0, -1.0, 2.0 * kTubeRadius + 0.3), Vec3::UnitY());
+  apart.run.timeStepFraction = 0.5;
+  EXPECT_NO_THROW(Simulation{apart});
 }
 
 }  // namespace
