@@ -47,6 +47,22 @@ inline void finishBlock(State& state, const EffectSequence& fx, const KinematicM
   }
 }
 
+// The parallel part of a step at time t, called by every thread of the enclosing parallel
+// region (its worksharing loops bind to that region): each effect's items, then per block of
+// elements the gathers and the kicks.
+void forcesAndKicks(State& state, const EffectSequence& fx, const KinematicMap& km, double t, double h, bool last) {
+  const int n = state.bodies.size(), blocks = (n + kBlock - 1) / kBlock;
+  for (Effect* e : fx.withItems) {
+    const int items = e->itemCount();
+    const int chunks = (items + kItemChunk - 1) / kItemChunk;
+#pragma omp for schedule(static) nowait
+    for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
+  }
+#pragma omp barrier
+#pragma omp for schedule(static)
+  for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
+}
+
 }  // namespace
 
 EffectSequence::EffectSequence(const std::vector<Effect*>& effects) : all(effects) {
@@ -134,7 +150,6 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     for (long k = 0; k < steps; ++k) state.time += h;
     return;
   }
-  const int blocks = (n + kBlock - 1) / kBlock;
   if (!fx.withPrepare.empty() || !fx.withFinish.empty()) {
     // Effects with serial phases (neighbour lists, dissipated work): those run between parallel
     // regions, one region per step, so that their own parallel loops (the neighbour list's
@@ -147,17 +162,7 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
       for (Effect* e : fx.withPrepare) e->prepare(state, t);
       const bool last = k + 1 == steps;
 #pragma omp parallel if (n > kParallelThreshold)
-      {
-        for (Effect* e : fx.withItems) {
-          const int items = e->itemCount();
-          const int chunks = (items + kItemChunk - 1) / kItemChunk;
-#pragma omp for schedule(static) nowait
-          for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
-        }
-#pragma omp barrier
-#pragma omp for schedule(static)
-        for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
-      }
+      forcesAndKicks(state, fx, km, t, h, last);
       for (Effect* e : fx.withFinish) e->finish(state, t);
     }
     for (long k = 0; k < steps; ++k) state.time += h;
@@ -170,16 +175,7 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
     for (long k = 0; k < steps; ++k) {
       t += h;
-      for (Effect* e : fx.withItems) {
-        const int items = e->itemCount();
-        const int chunks = (items + kItemChunk - 1) / kItemChunk;
-#pragma omp for schedule(static) nowait
-        for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
-      }
-#pragma omp barrier
-      const bool last = k + 1 == steps;
-#pragma omp for schedule(static)
-      for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
+      forcesAndKicks(state, fx, km, t, h, k + 1 == steps);
     }
   }
   for (long k = 0; k < steps; ++k) state.time += h;
