@@ -25,6 +25,7 @@ struct DemOptions {
   bool quiet = false;
   bool resume = false;
   bool overwrite = false;
+  bool profile = false;
 };
 
 void drawProgress(double fraction) {
@@ -50,6 +51,8 @@ Command makeDemCommand() {
     (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
     (*sub)->add_flag("--resume", opt->resume,
                      "continue the interrupted run from the checkpoint in the output folder (bit for bit)");
+    (*sub)->add_flag("--profile", opt->profile,
+                     "print the share of the run's wall time in each phase (each effect's items and gathers, integration, outputs)");
     (*sub)->add_flag("--overwrite", opt->overwrite,
                      "start afresh although the output folder holds an interrupted run's checkpoint");
   };
@@ -74,7 +77,7 @@ Command makeDemCommand() {
     if (opt->resume && opt->overwrite)
       throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
     mdem::RunOptions options;
-    options.resume = opt->resume, options.overwrite = opt->overwrite;
+    options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
     if (!opt->quiet) std::fprintf(stderr, "\n");
     if (!r.removedStale.empty())
@@ -103,6 +106,17 @@ Command makeDemCommand() {
                                  "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
                                  st.finalStrain, st.finalStress, st.peakStress, st.initialStress, st.crossSection,
                                  st.gaugeLength, st.tensileCsv);
+    }
+    if (opt->profile) {
+      std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",
+                               r.wallSeconds, r.wallSeconds > 0 ? static_cast<double>(scene.bodies.size()) *
+                                                                      (r.steps - std::max(0L, r.resumedFromStep)) / r.wallSeconds : 0.0);
+      double timed = 0.0;
+      for (const auto& [phase, sec] : r.profile.seconds) timed += sec;
+      for (const auto& [phase, sec] : r.profile.seconds)
+        std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", phase, sec, r.wallSeconds > 0 ? 100.0 * sec / r.wallSeconds : 0.0);
+      std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", "other (serial loop, progress)", r.wallSeconds - timed,
+                               r.wallSeconds > 0 ? 100.0 * (r.wallSeconds - timed) / r.wallSeconds : 0.0);
     }
     if (!scene.output.plotPng.empty())
       std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";

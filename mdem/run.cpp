@@ -257,6 +257,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                                           stageIndex, stageTime, stageStep, stageBodies);
     run->setStart(stageTime, stageStep);
     Simulation& sim = run->sim();
+    if (options.profile) sim.setProfile(&r.profile);
     const bool resumingHere = resumed && !previous;
     if (resumingHere) {
       resumed->restore(sim);
@@ -301,7 +302,10 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       if (o.checkpointEvery > 0) next = std::min(next, nextMultiple(k0, o.checkpointEvery));
       if (byMinutes) next = std::min(next, k0 + 1000);  // look at the clock at least every 1000 steps
       if (options.interruptAfter >= 0) next = std::min(next, std::max(k0 + 1, options.interruptAfter));
+      const auto stepping = Clock::now();
       sim.run(next - k0);
+      const auto outputs = Clock::now();
+      r.wallSeconds += std::chrono::duration<double>(outputs - stepping).count();
       const long k = sim.stepCount();
       if (options.interruptAfter >= 0 && k >= options.interruptAfter) {
         r.interrupted = true;
@@ -321,6 +325,9 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                        (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));
       if (due && !last && !stop) checkpoint();  // (a finished stage moves on at once)
       if (progress && (k % every == 0 || last)) progress(std::min(1.0, static_cast<double>(k) / totalSteps));
+      const double outputSeconds = std::chrono::duration<double>(Clock::now() - outputs).count();
+      r.wallSeconds += outputSeconds;
+      if (options.profile) r.profile["outputs (energies, samples, frames, checkpoints)"] += outputSeconds;
       if (stop) break;
     }
     summary.steps = sim.stepCount() - stageStep;

@@ -20,6 +20,8 @@ struct RunOptions {
   // Tests: stop as if killed once this many steps are done (no final outputs, the checkpoint
   // left as it was).
   long interruptAfter = -1;
+  // Time the phases of the steps and the outputs (RunSummary::profile).
+  bool profile = false;
 };
 
 struct StageSummary {
@@ -45,6 +47,8 @@ struct RunSummary {
   std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting
   EnergyLedger finalEnergies;
   std::vector<StageSummary> stages;  // those completed by this invocation
+  PhaseTimes profile;                // with RunOptions::profile: seconds per phase, "outputs" included
+  double wallSeconds = 0.0;          // of the stepping and outputs
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
   bool dissipatedTracked = false;  // the scene has an effect that dissipates (dashpots)

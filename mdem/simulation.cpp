@@ -60,7 +60,7 @@ void Simulation::run(long steps) {
   if (steps <= 0) return;
   const int threads = omp_get_max_threads();
   if (partition_.threads != threads) partition_ = partitionElements(state_.bodies.size(), bonds(), sequence_, threads);
-  advance(state_, sequence_, kinematics_, h_, steps, &partition_);
+  advance(state_, sequence_, kinematics_, h_, steps, &partition_, profile_);
   steps_ += steps;
 }
 

@@ -51,6 +51,9 @@ class Simulation {
   // left as it was.
   std::vector<Vec3> unconstrainedForces() const;
 
+  // Phase timing of the steps (dem --profile); null profile: none (the default, no cost).
+  void setProfile(PhaseTimes* profile) { profile_ = profile; }
+
   // Restart (checkpoint.hpp): the step count and every effect's evolving state.
   void setStepCount(long steps) { steps_ = steps; }
   // Recomputes the forces of the current state (after the state was replaced, e.g. by a
@@ -67,6 +70,7 @@ class Simulation {
   StabilityLimit limit_;
   double h_ = 0.0;
   long steps_ = 0;
+  PhaseTimes* profile_ = nullptr;
 };
 
 }  // namespace mesochain::mdem

@@ -34,12 +34,20 @@ inline void closeStep(Bodies& s, int i, double t, const KinematicMap& km, double
 // Forces of elements [lo, hi) at time t: every effect's gather in order, constrained components
 // cleared. Then close the step and, unless it is the last, open the next one.
 inline void finishBlock(State& state, const EffectSequence& fx, const KinematicMap& km, int lo, int hi,
-                        double t, double h, bool last) {
+                        double t, double h, bool last, double* gatherSeconds = nullptr) {
   Bodies& s = state.bodies;
   Vec3* force = s.force.data();
   Vec3* torque = s.torque.data();
   for (int i = lo; i < hi; ++i) force[i] = Vec3::Zero(), torque[i] = Vec3::Zero();
-  for (const Effect* e : fx.all) e->gather(state, t, lo, hi, force, torque);
+  if (gatherSeconds) {
+    for (std::size_t k = 0; k < fx.all.size(); ++k) {
+      const double t0 = omp_get_wtime();
+      fx.all[k]->gather(state, t, lo, hi, force, torque);
+      gatherSeconds[k] += omp_get_wtime() - t0;
+    }
+  } else {
+    for (const Effect* e : fx.all) e->gather(state, t, lo, hi, force, torque);
+  }
   for (int i = lo; i < hi; ++i) {
     km.clearElement(i, force[i], torque[i]);
     closeStep(s, i, t, km, h);
@@ -50,17 +58,34 @@ inline void finishBlock(State& state, const EffectSequence& fx, const KinematicM
 // The parallel part of a step at time t, called by every thread of the enclosing parallel
 // region (its worksharing loops bind to that region): each effect's items, then per block of
 // elements the gathers and the kicks.
-void forcesAndKicks(State& state, const EffectSequence& fx, const KinematicMap& km, double t, double h, bool last) {
+// `profile` (may be null): seconds of the first thread, per effect's items, per effect's
+// gather, then the rest of the block loop (integrate).
+void forcesAndKicks(State& state, const EffectSequence& fx, const KinematicMap& km, double t, double h, bool last,
+                    std::vector<double>* profile) {
   const int n = state.bodies.size(), blocks = (n + kBlock - 1) / kBlock;
-  for (Effect* e : fx.withItems) {
+  const bool timing = profile && omp_get_thread_num() == 0;
+  double mark = timing ? omp_get_wtime() : 0.0;
+  for (std::size_t k = 0; k < fx.withItems.size(); ++k) {
+    Effect* e = fx.withItems[k];
     const int items = e->itemCount();
     const int chunks = (items + kItemChunk - 1) / kItemChunk;
 #pragma omp for schedule(static) nowait
     for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
+    if (timing) {
+      const double now = omp_get_wtime();
+      (*profile)[k] += now - mark, mark = now;
+    }
   }
 #pragma omp barrier
+  if (timing) {
+    const double now = omp_get_wtime();
+    if (!fx.withItems.empty()) (*profile)[fx.withItems.size() - 1] += now - mark;  // the wait
+    mark = now;
+  }
+  double* gathers = timing ? profile->data() + fx.withItems.size() : nullptr;
 #pragma omp for schedule(static)
-  for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last);
+  for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last, gathers);
+  if (timing) profile->back() += omp_get_wtime() - mark;  // block loop incl. gathers (collect subtracts them)
 }
 
 }  // namespace
@@ -120,14 +145,38 @@ ThreadPartition partitionElements(int n, const std::vector<Bond>& bonds, const E
   return p;
 }
 
+double& PhaseTimes::operator[](const std::string& phase) {
+  for (auto& [name, value] : seconds)
+    if (name == phase) return value;
+  seconds.emplace_back(phase, 0.0);
+  return seconds.back().second;
+}
+
+namespace {
+// Slots of forcesAndKicks: items of each effect with items, gather of each effect, integrate.
+std::vector<double> profileSlots(const EffectSequence& fx) { return std::vector<double>(fx.withItems.size() + fx.all.size() + 1, 0.0); }
+void collect(const EffectSequence& fx, const std::vector<double>& slots, PhaseTimes* profile) {
+  if (!profile) return;
+  double gathered = 0.0;
+  for (std::size_t k = 0; k < fx.withItems.size(); ++k) (*profile)["items " + fx.withItems[k]->name()] += slots[k];
+  for (std::size_t k = 0; k < fx.all.size(); ++k) {
+    (*profile)["gather " + fx.all[k]->name()] += slots[fx.withItems.size() + k];
+    gathered += slots[fx.withItems.size() + k];
+  }
+  (*profile)["integrate"] += slots.back() - gathered;
+}
+}  // namespace
+
 void advance(State& state, const EffectSequence& fx, const KinematicMap& km, double h, long steps,
-             const ThreadPartition* partition) {
+             const ThreadPartition* partition, PhaseTimes* profile) {
   if (steps <= 0) return;
+  std::vector<double> slots = profile ? profileSlots(fx) : std::vector<double>{};
   Bodies& s = state.bodies;
   const int n = s.size();
   const double t0 = state.time;
   if (partition && partition->independent && partition->threads > 1 && n > kParallelThreshold) {
     const ThreadPartition& p = *partition;
+    const double start = omp_get_wtime();
 #pragma omp parallel num_threads(p.threads)
     {
       // Whole parts per thread (a smaller team than planned takes several parts each).
@@ -148,6 +197,7 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
       }
     }
     for (long k = 0; k < steps; ++k) state.time += h;
+    if (profile) (*profile)["independent parts (items, gathers, integrate)"] += omp_get_wtime() - start;
     return;
   }
   if (!fx.withPrepare.empty() || !fx.withFinish.empty()) {
@@ -159,13 +209,22 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     double t = t0;
     for (long k = 0; k < steps; ++k) {
       t += h;
-      for (Effect* e : fx.withPrepare) e->prepare(state, t);
+      for (Effect* e : fx.withPrepare) {
+        const double t1 = omp_get_wtime();
+        e->prepare(state, t);
+        if (profile) (*profile)["prepare " + e->name()] += omp_get_wtime() - t1;
+      }
       const bool last = k + 1 == steps;
 #pragma omp parallel if (n > kParallelThreshold)
-      forcesAndKicks(state, fx, km, t, h, last);
-      for (Effect* e : fx.withFinish) e->finish(state, t);
+      forcesAndKicks(state, fx, km, t, h, last, profile ? &slots : nullptr);
+      for (Effect* e : fx.withFinish) {
+        const double t1 = omp_get_wtime();
+        e->finish(state, t);
+        if (profile) (*profile)["finish " + e->name()] += omp_get_wtime() - t1;
+      }
     }
     for (long k = 0; k < steps; ++k) state.time += h;
+    collect(fx, slots, profile);
     return;
   }
 #pragma omp parallel if (n > kParallelThreshold)
@@ -175,10 +234,11 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
     for (long k = 0; k < steps; ++k) {
       t += h;
-      forcesAndKicks(state, fx, km, t, h, k + 1 == steps);
+      forcesAndKicks(state, fx, km, t, h, k + 1 == steps, profile ? &slots : nullptr);
     }
   }
   for (long k = 0; k < steps; ++k) state.time += h;
+  collect(fx, slots, profile);
 }
 
 void evaluateForces(State& state, const EffectSequence& fx, const KinematicMap& km, bool includeNumericalDamping,

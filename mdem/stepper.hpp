@@ -17,6 +17,8 @@
 // contiguous range per thread with no bond between ranges (separate filaments), each thread
 // advances its range through all n steps with no barrier at all (ThreadPartition). This matters
 // on a loaded machine, where every barrier may wait for a descheduled thread.
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "mdem/boundary.hpp"
@@ -47,11 +49,19 @@ struct ThreadPartition {
 ThreadPartition partitionElements(int elementCount, const std::vector<Bond>& bonds,
                                   const EffectSequence& effects, int threads);
 
+// Wall seconds by phase of the step, measured on the first thread of the team (with static
+// schedules every thread has an equal share; waits at barriers are counted in the phase before
+// them): "prepare <effect>", "items <effect>", "gather <effect>", "integrate", "finish <effect>".
+struct PhaseTimes {
+  std::vector<std::pair<std::string, double>> seconds;
+  double& operator[](const std::string& phase);
+};
+
 // Advances `steps` steps. On entry state.bodies.force / torque hold the forces of the current
 // state; on exit those of the final state. `partition` (may be null) selects the barrier-free
 // scheme when it is independent and made for the current number of threads.
 void advance(State& state, const EffectSequence& effects, const KinematicMap& kinematics, double h,
-             long steps, const ThreadPartition* partition = nullptr);
+             long steps, const ThreadPartition* partition = nullptr, PhaseTimes* profile = nullptr);
 
 // One force evaluation at state.time, serially (start-up, residuals): every effect of the
 // sequence, numerical damping only when asked; constrained components cleared when asked.

@@ -313,3 +313,33 @@ TEST_F(Restart, StageErrorsNameTheKey) {
 
 }  // namespace
 }  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// dem --profile: every effect of the run has its phases, and the timed phases add up to no more
+// than the run's wall time.
+TEST_F(Restart, ProfileNamesEveryEffectsPhases) {
+  RunOptions o;
+  o.profile = true;
+  const RunSummary r = run("profiled", o);
+  double sum = 0.0;
+  std::string phases;
+  for (const auto& [phase, seconds] : r.profile.seconds) {
+    EXPECT_GE(seconds, 0.0) << phase;
+    sum += seconds;
+    phases += phase + "; ";
+  }
+  for (const char* e : {"bonds", "vdw_contact", "contact_damping", "local_damping"})
+    EXPECT_NE(phases.find(std::string("gather ") + e), std::string::npos) << phases;
+  EXPECT_NE(phases.find("items vdw_contact"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("prepare vdw_contact"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("outputs"), std::string::npos) << phases;
+  EXPECT_GT(r.wallSeconds, 0.0);
+  EXPECT_LE(sum, 1.01 * r.wallSeconds) << phases;
+  // Without --profile nothing is timed.
+  EXPECT_TRUE(run("plain").profile.seconds.empty());
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
