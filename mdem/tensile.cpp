@@ -11,6 +11,7 @@
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
 #include "mdem/contacts/contact_effects.hpp"
+#include "mdem/contacts/network_structure.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/integrator.hpp"
 #include "mdem/output.hpp"
@@ -112,8 +113,10 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
   if (!samples_.empty()) s.gripWork = samples_.back().gripWork + 0.5 * (lastPower_ + power) * (s.time - samples_.back().time);
   lastPower_ = power;
   if (const ContactNeighbourhood* nb = sim.contactNeighbourhood()) {
-    const ContactCount c = countContacts(*nb, b, t.contactGap, t.alignedAngle);
-    s.contacts = c.inContact, s.aligned = c.aligned;
+    const NetworkStructure n = networkStructure(*nb, b, t.contactGap, t.alignedAngle, a);
+    s.contacts = n.contacts, s.aligned = n.aligned;
+    s.bundles = n.bundles, s.largestBundle = n.largestBundle, s.meanBundle = n.meanBundle;
+    s.orderParameter = n.orderParameter, s.axisAlignment = n.axisAlignment;
   }
   samples_.push_back(s);
   if (csv_) {
@@ -122,19 +125,20 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
     if (csv_->bytes() == 0) {
       row = "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ";
       for (const std::string& c : columns_) row += "," + (c.empty() ? std::string("total") : c) + "_zJ";
-      row += ",contact_pairs,aligned_pairs\n";
+      row += ",contact_pairs,aligned_pairs,bundles,mean_bundle_elements,largest_bundle_elements,order_parameter,axis_alignment\n";
     }
     row += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", s.time, s.strain, s.stress, s.forceLeft,
                        s.forceRight, s.gripWork);
     for (const std::string& c : columns_) row += fmt::format(",{:.10g}", c.empty() ? s.energies.total() : s.energies[c]);
-    row += fmt::format(",{},{}\n", s.contacts, s.aligned);
+    row += fmt::format(",{},{},{},{:.6g},{},{:.6g},{:.6g}\n", s.contacts, s.aligned, s.bundles, s.meanBundle, s.largestBundle,
+                       s.orderParameter, s.axisAlignment);
     csv_->write(row);
   }
   return samples_.back();
 }
 
 void TensileRecorder::writePlot(const std::string& path) const {
-  std::vector<double> strain, stress, contacts, aligned;
+  std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
   // Each stored (potential) energy, the kinetic energy, the grip work and total - initial.
   std::vector<std::string> names;
   if (!samples_.empty())
@@ -146,6 +150,7 @@ void TensileRecorder::writePlot(const std::string& path) const {
   for (const TensileSample& s : samples_) {
     strain.push_back(s.strain), stress.push_back(s.stress);
     contacts.push_back(s.contacts), aligned.push_back(s.aligned);
+    order.push_back(s.orderParameter), alignment.push_back(s.axisAlignment), largest.push_back(s.largestBundle);
     const EnergyLedger& e = s.energies;
     for (std::size_t k = 0; k < stored; ++k) energy[k].push_back(e[names[k]]);
     energy[stored].push_back(e.kinetic());
@@ -171,8 +176,19 @@ void TensileRecorder::writePlot(const std::string& path) const {
   plot::SeriesStyle st;
   st.color = plot::paletteColor(1);
   fc.add(fmt::format("aligned (< {:.0f} deg)", scene_.tensile.alignedAngle * 180.0 / 3.14159265358979), strain, aligned, st);
+  st.color = plot::paletteColor(2);
+  st.dashed = true;
+  fc.add("elements in the largest bundle", strain, largest, st);
+  plot::Figure fo("In-plane orientation against strain");
+  fo.x.label = "strain";
+  fo.y.label = "order";
+  fo.add("order parameter S = lambda1 - lambda2", strain, order);
+  plot::SeriesStyle so;
+  so.color = plot::paletteColor(1);
+  fo.add(fmt::format("alignment with the {} axis, <cos 2 phi>", scene_.tensile.axis == 0 ? "x" : "y"), strain, alignment, so);
   plot::Image image = plot::aboveEachOther(fs.render(width, height, path), fe.render(width, height, path));
   image = plot::aboveEachOther(image, fc.render(width, height, path));
+  image = plot::aboveEachOther(image, fo.render(width, height, path));
   plot::writePng(path, image);
 }
 
@@ -186,6 +202,8 @@ void TensileRecorder::saveState(BinaryWriter& out) const {
   for (const TensileSample& s : samples_) {
     for (double v : {s.time, s.strain, s.stress, s.forceLeft, s.forceRight, s.gripWork}) out.write(v);
     out.write<std::int32_t>(s.contacts), out.write<std::int32_t>(s.aligned);
+    out.write<std::int32_t>(s.bundles), out.write<std::int32_t>(s.largestBundle);
+    out.write(s.meanBundle), out.write(s.orderParameter), out.write(s.axisAlignment);
     out.write<std::uint64_t>(s.energies.entries().size());
     for (const LedgerEntry& e : s.energies.entries()) {
       out.write(e.name);
@@ -203,6 +221,8 @@ void TensileRecorder::loadState(BinaryReader& in) {
     TensileSample s;
     for (double* v : {&s.time, &s.strain, &s.stress, &s.forceLeft, &s.forceRight, &s.gripWork}) *v = in.read<double>();
     s.contacts = in.read<std::int32_t>(), s.aligned = in.read<std::int32_t>();
+    s.bundles = in.read<std::int32_t>(), s.largestBundle = in.read<std::int32_t>();
+    s.meanBundle = in.read<double>(), s.orderParameter = in.read<double>(), s.axisAlignment = in.read<double>();
     const std::uint64_t entries = in.read<std::uint64_t>();
     for (std::uint64_t e = 0; e < entries; ++e) {
       const std::string name = in.read<std::string>();

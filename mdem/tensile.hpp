@@ -43,6 +43,9 @@ struct TensileSample {
   double gripWork = 0.0;                          // zJ
   EnergyLedger energies;
   int contacts = 0, aligned = 0;
+  // Bundles and orientation (contacts/network_structure.hpp; zero without contacts).
+  int bundles = 0, largestBundle = 0;
+  double meanBundle = 0.0, orderParameter = 0.0, axisAlignment = 0.0;
 };
 
 class TensileRecorder {
