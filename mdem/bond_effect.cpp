@@ -34,6 +34,25 @@ std::vector<BondEnergy> BondEffect::bondEnergies(const State& state) const {
   return out;
 }
 
+std::vector<BondLoad> BondEffect::bondLoads(const State& state) const {
+  const Bodies& s = state.bodies;
+  std::vector<BondLoad> out(bonds_.size());
+  for (std::size_t k = 0; k < bonds_.size(); ++k) {
+    const Bond& b = bonds_[k];
+    const BondResult r = evaluateBond(b, s.position[b.a], s.orientation[b.a], s.position[b.b], s.orientation[b.b]);
+    out[k] = bondLoad(b, r.d, r.theta);
+  }
+  return out;
+}
+
+void BondEffect::addElementEnergies(const State& state, std::vector<double>& perElement) const {
+  const std::vector<BondEnergy> e = bondEnergies(state);
+  for (std::size_t k = 0; k < bonds_.size(); ++k) {
+    perElement[bonds_[k].a] += 0.5 * e[k].total();
+    perElement[bonds_[k].b] += 0.5 * e[k].total();
+  }
+}
+
 void BondEffect::reportEnergy(const State& state, EnergyLedger& ledger) const {
   BondEnergy e;
   for (const BondEnergy& b : bondEnergies(state)) e += b;

@@ -57,6 +57,9 @@ class BondEffect : public Effect {
   }
   // Energy of each bond in the current state.
   std::vector<BondEnergy> bondEnergies(const State& state) const;
+  // What each bond carries in the current state (outputs).
+  std::vector<BondLoad> bondLoads(const State& state) const override;
+  void addElementEnergies(const State& state, std::vector<double>& perElement) const override;
 
  private:
   struct Wrench {

@@ -73,10 +73,16 @@ class Effect {
   // outputs, not per step.
   virtual void reportEnergy(const State& state, EnergyLedger& ledger) const = 0;
 
+  // Adds each element's share of the energy this effect stores (zJ; a bond's or a pair's energy
+  // split evenly between its two elements), for per-element outputs (VTK frames).
+  virtual void addElementEnergies(const State& /*state*/, std::vector<double>& /*perElement*/) const {}
+
   // Contributions to the critical time step beyond the bonds' (stability.hpp): per element type.
   virtual void addStabilityTerms(std::vector<ContactStabilityTerms>& /*perType*/) const {}
   // Capabilities other parts of the engine may use (null when the effect has none).
   virtual const std::vector<Bond>* bondList() const { return nullptr; }
+  // What each bond of bondList() carries in `state` (outputs), or nothing.
+  virtual std::vector<BondLoad> bondLoads(const State& /*state*/) const { return {}; }
   virtual const ContactNeighbourhood* contactNeighbourhood() const { return nullptr; }
 
   // Evolving state that determines the future (tracked twist branches, dissipated work,

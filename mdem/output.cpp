@@ -59,7 +59,7 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
 }
 
 void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<Bond>& bonds,
-                   double time) {
+                   double time, const VtkFields& fields) {
   AtomicOutputFile file(path);  // a kill leaves the previous frame or none, never half of one
   std::ofstream& out = file.stream();
   const int n = b.size();
@@ -91,6 +91,22 @@ void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<B
   }
   out << "VECTORS velocity double\n";
   for (const Vec3& v : b.velocity) out << fmt::format("{:.10g} {:.10g} {:.10g}\n", v.x(), v.y(), v.z());
+  if (static_cast<int>(fields.elementEnergy.size()) == n) {
+    out << "SCALARS energy_zJ double 1\nLOOKUP_TABLE default\n";
+    for (double e : fields.elementEnergy) out << fmt::format("{:.10g}\n", e);
+  }
+  if (!bonds.empty() && fields.bondLoads.size() == bonds.size()) {
+    out << "CELL_DATA " << n + bonds.size() << "\n";
+    const char* names[4] = {"normal_force_pN", "shear_force_pN", "bending_moment_pN_nm", "twisting_moment_pN_nm"};
+    for (int q = 0; q < 4; ++q) {
+      out << "SCALARS " << names[q] << " double 1\nLOOKUP_TABLE default\n";
+      for (int i = 0; i < n; ++i) out << "0\n";  // the vertex cells
+      for (const BondLoad& l : fields.bondLoads) {
+        const double v[4] = {l.normalForce, l.shearForce, l.bendingMoment, l.twistingMoment};
+        out << fmt::format("{:.10g}\n", v[q]);
+      }
+    }
+  }
   file.commit();
 }
 

@@ -45,9 +45,16 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
                    double time, long step);
 
 // Legacy VTK (ASCII POLYDATA) for ParaView / OVITO: points = element centres (nm), vertices,
-// lines = bonds; point data: element id, type, quaternion (w, x, y, z) and the body axes
-// axis_x (thickness), axis_y (width), axis_z (length) as vectors; cell data none.
+// lines = bonds; point data: element id, type, quaternion (w, x, y, z), the body axes
+// axis_x (thickness), axis_y (width), axis_z (length) as vectors, velocity, and (when given)
+// each element's energy (zJ, its share of the bonds' and contacts' stored energy); cell data
+// (when given; zero on the vertex cells): per bond normal_force_pN (tension > 0), shear_force_pN,
+// bending_moment_pN_nm, twisting_moment_pN_nm. Written atomically.
+struct VtkFields {
+  std::vector<double> elementEnergy;  // per element, or empty
+  std::vector<BondLoad> bondLoads;    // per bond, or empty
+};
 void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<Bond>& bonds,
-                   double time);
+                   double time, const VtkFields& fields = {});
 
 }  // namespace mesochain::mdem

@@ -139,4 +139,14 @@ Eigen::Matrix<double, 12, 12> linearStiffness(const Bond& bond, const Bodies& bo
   return bmat.transpose() * dvec.asDiagonal() * bmat;
 }
 
+BondLoad bondLoad(const Bond& bond, const Vec3& d, const Vec3& theta) {
+  const BondSection& c = bond.section;
+  BondLoad l;
+  l.normalForce = bond.k.kn * c.area * d.z();
+  l.shearForce = bond.k.ks * c.area * std::hypot(d.x(), d.y());
+  l.bendingMoment = bond.k.kn * std::hypot(c.ix * theta.x(), c.iy * theta.y());
+  l.twistingMoment = bond.k.ks * c.j * std::abs(theta.z());
+  return l;
+}
+
 }  // namespace mesochain::mdem

@@ -59,6 +59,14 @@ struct Bond {
   Vec3 anchorAInBondFrame = Vec3::Zero();
 };
 
+// What a bond carries, for outputs (bond frame of a): normal force k_n A d_z (pN, tension > 0),
+// shear force k_s A |d_xy| (pN), bending moment k_n |(I_x theta_x, I_y theta_y)| and twisting
+// moment k_s J |theta_z| (pN nm).
+struct BondLoad {
+  double normalForce = 0.0, shearForce = 0.0, bendingMoment = 0.0, twistingMoment = 0.0;
+};
+BondLoad bondLoad(const Bond& bond, const Vec3& d, const Vec3& theta);
+
 // Energies of one bond (zJ).
 struct BondEnergy {
   double stretching = 0.0, shearing = 0.0, twisting = 0.0, bending = 0.0;

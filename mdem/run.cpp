@@ -242,7 +242,15 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       writeXyzFrame(text, sim.bodies(), s.elementTypes, sim.time(), sim.stepCount());
       xyz->write(text.str());
     }
-    if (!vtkPrefix.empty()) writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time());
+    if (!vtkPrefix.empty()) {
+      VtkFields fields;
+      fields.elementEnergy.assign(sim.bodies().size(), 0.0);
+      for (const EffectPtr& e : sim.effects()) {
+        e->addElementEnergies(sim.state(), fields.elementEnergy);
+        if (e->bondList()) fields.bondLoads = e->bondLoads(sim.state());
+      }
+      writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time(), fields);
+    }
     ++frame;
   };
 

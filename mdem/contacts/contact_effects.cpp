@@ -253,6 +253,13 @@ void VdwContactEffect::reportEnergy(const State& state, EnergyLedger& ledger) co
   ledger.add("vdw", EnergyKind::Potential, sum);
 }
 
+void VdwContactEffect::addElementEnergies(const State& state, std::vector<double>& perElement) const {
+  for (const auto& [i, j] : nb_->list().pairs()) {
+    const double e = pair(state.bodies, i, j).energy;
+    perElement[i] += 0.5 * e, perElement[j] += 0.5 * e;
+  }
+}
+
 void VdwContactEffect::saveState(BinaryWriter& out) const {
   if (ownsNeighbourhood_) nb_->saveList(out);
 }

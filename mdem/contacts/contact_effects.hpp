@@ -65,6 +65,7 @@ class VdwContactEffect : public Effect {
   void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const override;
   // Entry "vdw".
   void reportEnergy(const State& state, EnergyLedger& ledger) const override;
+  void addElementEnergies(const State& state, std::vector<double>& perElement) const override;
   void addStabilityTerms(std::vector<ContactStabilityTerms>& perType) const override;
   const ContactNeighbourhood* contactNeighbourhood() const override { return nb_.get(); }
   void saveState(BinaryWriter& out) const override;
