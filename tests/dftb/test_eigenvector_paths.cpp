@@ -220,6 +220,17 @@ TEST(EigenvectorPaths, SameEnergyAndForcesOnAMetallicTubeAtLowTemperature) {
   expectSameResults(all, subset, cell, 1e-10);
 }
 
+TEST(EigenvectorPaths, OccupiedOnlyGradientMatchesFiniteDifferences) {
+  auto cell = mesochain::testing::zigzagHelical(5);
+  mesochain::testing::distort(cell, 0.07);
+  const auto calc = calculatorWith(EigenvectorPath::OccupiedOnly, 800, 8);
+  const auto r = calc.evaluate(cell, {true, false});
+  for (int a = 0; a < cell.atomCount(); ++a)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(r.gradient(k, a), mesochain::testing::fdGradient(calc, cell, a, k, 1e-4), 2e-7)
+          << "atom " << a << " component " << k;
+}
+
 TEST(EigenvectorPaths, SccChargesEnergyAndForcesAgreeAcrossPaths) {
   // The SCC loop reuses the overlap's Cholesky factors from its first iteration on.
   auto cell = mesochain::testing::helicalChUnit();
