@@ -53,22 +53,21 @@ void GeneralizedEigensolver::resize(int n) {
   const int dHetrd = big ? lapack::queryHetrd<double>(n) : 1;
   const int dUnm =
       big ? std::max(lapack::queryUnmtr<double>(n, n), lapack::queryUnmqr(n, n, double{})) : 1;
-  int stemrWork = 18 * n, stemrIwork = 10 * n;
-  if (big) lapack::queryStemr(n, stemrWork, stemrIwork);
+  int stedcWork = 1 + 4 * n + 2 * n * n, stedcIwork = 3 + 5 * n;
+  if (big) lapack::queryStedc(n, stedcWork, stedcIwork);
   const long n2 = static_cast<long>(n) * n;
   const long zheevd = std::max({2 * n + n2, n + n2 + std::max<long>(n, zUnm), n + long(zHetrd)});
   const long zlen = std::max({zheevd, long(zHetrd), long(zUnm)});
   const long zheevdRwork = 1 + 5 * n + 2 * n2;
   const long dsyevd =
       std::max({1 + 6 * n + 2 * n2, 2 * n + n2 + std::max<long>(n, dUnm), 2 * n + long(dHetrd)});
-  const long dlen = std::max({zheevdRwork, dsyevd, long(dHetrd), long(dUnm), long(stemrWork)});
-  const long ilen = std::max<long>(3 + 5 * n, stemrIwork);
+  const long dlen = std::max({zheevdRwork, dsyevd, long(dHetrd), long(dUnm), long(stedcWork)});
+  const long ilen = std::max<long>(3 + 5 * n, stedcIwork);
   zwork_.resize(static_cast<size_t>(zlen));
   dwork_.resize(static_cast<size_t>(dlen));
   iwork_.resize(static_cast<size_t>(ilen));
-  isuppz_.resize(static_cast<size_t>(2 * n));
   dcopy_.resize(static_cast<size_t>(2 * n));
-  wcopy_.resize(static_cast<size_t>(n));
+  z_.resize(static_cast<size_t>(n2));
 }
 
 namespace {
@@ -135,15 +134,12 @@ void GeneralizedEigensolver::lowestVectors(ReducedProblem<Scalar>& p, int m, Mat
   const int lwork = std::is_same_v<Scalar, cd> ? complexWorkLength() : realWorkLength();
   std::copy(p.diagonal.data(), p.diagonal.data() + n, dcopy_.begin());
   std::copy(p.offDiagonal.data(), p.offDiagonal.data() + std::max(0, n - 1), dcopy_.begin() + n);
-  dcopy_[2 * n - 1] = 0.0;
-  int found = 0;
-  check(lapack::stemr(n, dcopy_.data(), dcopy_.data() + n, 1, m, found, wcopy_.data(), c.data(),
-                      n, isuppz_.data(), dwork_.data(), realWorkLength(), iwork_.data(),
-                      integerWorkLength()),
-        "stemr", context);
-  if (found != m)
-    throw NumericalError(std::string(context) + ": MRRR found " + std::to_string(found) +
-                         " of the " + std::to_string(m) + " lowest eigenpairs");
+  check(lapack::stedc(n, dcopy_.data(), dcopy_.data() + n, z_.data(), dwork_.data(),
+                      realWorkLength(), iwork_.data(), integerWorkLength()),
+        "stedc", context);
+  const Eigen::Map<const Eigen::MatrixXd> z(z_.data(), n, n);
+  if constexpr (std::is_same_v<Scalar, cd>) c.leftCols(m) = z.leftCols(m).cast<cd>();
+  else c.leftCols(m) = z.leftCols(m);
   check(lapack::unmtr(n, m, p.a.data(), p.tau.data(), c.data(), work, lwork), "unmtr", context);
   lapack::trsm(false, n, m, p.a.data(), c.data());  // C = L^-H Y with L^H in the upper triangle
 }

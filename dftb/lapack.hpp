@@ -38,6 +38,8 @@ void dstemr_(const char* jobz, const char* range, const int* n, double* d, doubl
              const double* vl, const double* vu, const int* il, const int* iu, int* m, double* w,
              double* z, const int* ldz, const int* nzc, int* isuppz, int* tryrac, double* work,
              const int* lwork, int* iwork, const int* liwork, int* info, flen, flen);
+void dstedc_(const char* compz, const int* n, double* d, double* e, double* z, const int* ldz,
+             double* work, const int* lwork, int* iwork, const int* liwork, int* info, flen);
 void zunmtr_(const char* side, const char* uplo, const char* trans, const int* m, const int* n,
              const cd* a, const int* lda, const cd* tau, cd* c, const int* ldc, cd* work,
              const int* lwork, int* info, flen, flen, flen);
@@ -128,6 +130,21 @@ inline int stemr(int n, double* d, double* e, int il, int iu, int& m, double* w,
   dstemr_("V", "I", &n, d, e, &vl, &vu, &il, &iu, &m, w, z, &ldz, &nzc, isuppz, &tryrac, work,
           &lwork, iwork, &liwork, &info, 1, 1);
   return info;
+}
+// All eigenpairs of the tridiagonal (d, e) by divide and conquer (Cuppen; Gu & Eisenstat,
+// SIAM J. Matrix Anal. Appl. 16, 172 (1995)): d receives the eigenvalues, z (n x n) the vectors.
+inline int stedc(int n, double* d, double* e, double* z, double* work, int lwork, int* iwork,
+                 int liwork) {
+  int info = 0;
+  dstedc_("I", &n, d, e, z, &n, work, &lwork, iwork, &liwork, &info, 1);
+  return info;
+}
+inline void queryStedc(int n, int& lwork, int& liwork) {
+  double d = 0, e = 0, z = 0, work = 0;
+  int iw = 0;
+  stedc(n, &d, &e, &z, &work, -1, &iw, -1);
+  lwork = static_cast<int>(work);
+  liwork = iw;
 }
 // C (n x m) <- Q C, Q from the reflectors hetrd left below the subdiagonal of a.
 inline int unmtr(int n, int m, const cd* a, const cd* tau, cd* c, cd* work, int lwork) {
