@@ -83,7 +83,7 @@ void report(const std::string& name, const Timing& t) {
 const char* pathName(dftb::EigenvectorPath p) {
   switch (p) {
     case dftb::EigenvectorPath::AllVectors: return "all vectors (heevd)";
-    case dftb::EigenvectorPath::OccupiedOnly: return "occupied only (stemr)";
+    case dftb::EigenvectorPath::OccupiedOnly: return "occupied only (stedc)";
     default: return "automatic";
   }
 }

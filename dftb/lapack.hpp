@@ -30,14 +30,6 @@ void zhetrd_(const char* uplo, const int* n, cd* a, const int* lda, double* d, d
 void dsytrd_(const char* uplo, const int* n, double* a, const int* lda, double* d, double* e,
              double* tau, double* work, const int* lwork, int* info, flen);
 void dsterf_(const int* n, double* d, double* e, int* info);
-void zstemr_(const char* jobz, const char* range, const int* n, double* d, double* e,
-             const double* vl, const double* vu, const int* il, const int* iu, int* m, double* w,
-             cd* z, const int* ldz, const int* nzc, int* isuppz, int* tryrac, double* work,
-             const int* lwork, int* iwork, const int* liwork, int* info, flen, flen);
-void dstemr_(const char* jobz, const char* range, const int* n, double* d, double* e,
-             const double* vl, const double* vu, const int* il, const int* iu, int* m, double* w,
-             double* z, const int* ldz, const int* nzc, int* isuppz, int* tryrac, double* work,
-             const int* lwork, int* iwork, const int* liwork, int* info, flen, flen);
 void dstedc_(const char* compz, const int* n, double* d, double* e, double* z, const int* ldz,
              double* work, const int* lwork, int* iwork, const int* liwork, int* info, flen);
 void zunmtr_(const char* side, const char* uplo, const char* trans, const int* m, const int* n,
@@ -113,24 +105,6 @@ inline int sterf(int n, double* d, double* e) {
   dsterf_(&n, d, e, &info);
   return info;
 }
-// Eigenpairs il..iu (1-based) of the tridiagonal (d, e) by MRRR (Dhillon, Parlett & Voemel,
-// ACM TOMS 32, 533 (2006)); d and e are overwritten, e needs n entries. Returns info; m found.
-inline int stemr(int n, double* d, double* e, int il, int iu, int& m, double* w, cd* z, int ldz,
-                 int* isuppz, double* work, int lwork, int* iwork, int liwork) {
-  int info = 0, tryrac = 1, nzc = iu - il + 1;
-  const double vl = 0, vu = 0;
-  zstemr_("V", "I", &n, d, e, &vl, &vu, &il, &iu, &m, w, z, &ldz, &nzc, isuppz, &tryrac, work,
-          &lwork, iwork, &liwork, &info, 1, 1);
-  return info;
-}
-inline int stemr(int n, double* d, double* e, int il, int iu, int& m, double* w, double* z,
-                 int ldz, int* isuppz, double* work, int lwork, int* iwork, int liwork) {
-  int info = 0, tryrac = 1, nzc = iu - il + 1;
-  const double vl = 0, vu = 0;
-  dstemr_("V", "I", &n, d, e, &vl, &vu, &il, &iu, &m, w, z, &ldz, &nzc, isuppz, &tryrac, work,
-          &lwork, iwork, &liwork, &info, 1, 1);
-  return info;
-}
 // All eigenpairs of the tridiagonal (d, e) by divide and conquer (Cuppen; Gu & Eisenstat,
 // SIAM J. Matrix Anal. Appl. 16, 172 (1995)): d receives the eigenvalues, z (n x n) the vectors.
 inline int stedc(int n, double* d, double* e, double* z, double* work, int lwork, int* iwork,
@@ -201,14 +175,4 @@ inline int queryUnmqr(int n, int columns, double) {
   dormqr_("L", "N", &mi, &columns, &k, &a, &n, &tau, &c, &n, &work, &lwork, &info, 1, 1);
   return static_cast<int>(work);
 }
-// zstemr / dstemr: real work and integer work for eigenvectors of an index range.
-inline void queryStemr(int n, int& lwork, int& liwork) {
-  double d = 0, e = 0, w = 0, work = 0;
-  cd z{};
-  int m = 0, isuppz[2] = {0, 0}, iw = 0;
-  stemr(n, &d, &e, 1, n, m, &w, &z, n, isuppz, &work, -1, &iw, -1);
-  lwork = static_cast<int>(work);
-  liwork = iw;
-}
-
 }  // namespace mesochain::dftb::lapack

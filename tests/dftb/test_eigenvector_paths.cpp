@@ -2,8 +2,8 @@
 // * the workspace given to zheevd/dsyevd leaves the back-transformation (zunmtr/dormtr and the
 //   zunmqr/dormqr it calls) at least what the implementation's own workspace query asks for,
 //   i.e. the blocked path, which the documented minimum does not;
-// * AllVectors (divide and conquer, all pairs) and OccupiedOnly (tridiagonal kept, MRRR for
-//   the m lowest pairs) give the same eigenvalues, the same occupied subspace (projectors: the
+// * AllVectors (divide and conquer, all pairs) and OccupiedOnly (tridiagonal kept, the
+//   back-transformations on the m lowest vectors only) give the same eigenvalues, the same occupied subspace (projectors: the
 //   vectors of a degenerate level are defined only up to a unitary mixing) and S-orthonormal
 //   vectors, also when the cut falls on an exactly degenerate level;
 // * the band and SCC terms give the same energies, forces and charges on either path, and with
