@@ -1,7 +1,11 @@
 // Benchmarks of the DFTB engine.
 // `mesochain bench dftb`: time per energy+forces evaluation and the share of it spent in the
 // LAPACK eigensolver, for (i) a (10,10) tube as a 2-atom helical cell with 800 kappa points and
-// (ii) the 120-atom translational cell of a (30,30) tube with 20 kappa points.
+// (ii) the 120-atom translational cell of a (30,30) tube with 20 kappa points; for (ii) also the
+// time LAPACK's own drivers need, stand-alone on the same matrices, for the eigenpairs the
+// evaluation uses (bench_dftb_lapack.cpp) and the share of the total spent in LAPACK.
+// --compare-paths: every case with each eigenvector path forced (eigensolver.hpp), to place
+// the size at which Automatic switches.
 // `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob),
 // as a table, optionally CSV and a PNG (error vs kappa points and error vs time, log-log).
 #include <chrono>
@@ -16,6 +20,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "app/bench_dftb_lapack.hpp"
 #include "app/commands.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
@@ -34,9 +39,11 @@ std::shared_ptr<const dftb::ParameterSet> carbon(const std::string& table) {
       dftb::ParameterSet::load({"C"}, {{"C-C", table}}, "<bench>"));
 }
 
-dftb::Calculator calculator(const std::string& table, int nKappa, double kelvin) {
+dftb::Calculator calculator(const std::string& table, int nKappa, double kelvin,
+                            dftb::EigenvectorPath path = dftb::EigenvectorPath::Automatic) {
   dftb::CalculatorSettings s;
   s.band.helicalKPoints = nKappa;
+  s.band.eigenvectors = path;
   s.band.electronicTemperature = kelvin * units::kBoltzmannHartreePerKelvin;
   return dftb::Calculator(carbon(table), s);
 }
@@ -73,19 +80,58 @@ void report(const std::string& name, const Timing& t) {
       100 * t.forces / t.perEvaluation, 100 * t.other / t.perEvaluation);
 }
 
-int benchDftb(const std::string& table, int repeats) {
+const char* pathName(dftb::EigenvectorPath p) {
+  switch (p) {
+    case dftb::EigenvectorPath::AllVectors: return "all vectors (heevd)";
+    case dftb::EigenvectorPath::OccupiedOnly: return "occupied only (stedc)";
+    default: return "automatic";
+  }
+}
+
+int benchDftb(const std::string& table, int repeats, bool comparePaths) {
   std::cout << fmt::format("mesochain bench dftb: {} OpenMP threads, {} repeats, table {}\n",
                            omp_get_max_threads(), repeats, table);
   const double bond = 1.42 * units::kAngstromInBohr;
+  using dftb::EigenvectorPath;
+  std::vector<EigenvectorPath> paths{EigenvectorPath::Automatic};
+  if (comparePaths) paths = {EigenvectorPath::AllVectors, EigenvectorPath::OccupiedOnly};
+  struct Case {
+    std::string name;
+    objective::ObjectiveCell cell;
+    int nKappa;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"(10,10) helical 2 atoms, 800 kappa, 300 K", objective::buildNanotubeHelical(10, 10, bond), 800});
+  if (comparePaths)
+    for (int n : {5, 10, 15}) {
+      auto cell = objective::buildNanotubeTranslational(n, n, bond, false);
+      cases.push_back({fmt::format("({},{}) translational {} atoms, 20 kappa, 300 K", n, n,
+                                   cell.atomCount()), cell, 20});
+    }
   {
-    const auto cell = objective::buildNanotubeHelical(10, 10, bond);
-    report("(10,10) helical 2 atoms, 800 kappa, 300 K", timeEvaluations(calculator(table, 800, 300), cell, repeats));
+    auto cell = objective::buildNanotubeTranslational(30, 30, bond, false);
+    cases.push_back({fmt::format("(30,30) translational {} atoms, 20 kappa, 300 K", cell.atomCount()),
+                     cell, 20});
   }
-  {
-    const auto cell = objective::buildNanotubeTranslational(30, 30, bond, false);
-    report(fmt::format("(30,30) translational {} atoms, 20 kappa, 300 K", cell.atomCount()),
-           timeEvaluations(calculator(table, 20, 300), cell, repeats));
-  }
+  for (const Case& c : cases)
+    for (EigenvectorPath p : paths) {
+      const std::string name = comparePaths ? c.name + ", " + pathName(p) : c.name;
+      const Timing t = timeEvaluations(calculator(table, c.nKappa, 300, p), c.cell, repeats);
+      report(name, t);
+      if (comparePaths || c.nKappa != 20) continue;
+      // The stand-alone LAPACK reference on the same matrices (one thread).
+      const auto params = carbon(table);
+      const LapackReference ref =
+          lapackReference(c.cell, *params, c.nKappa, 300 * units::kBoltzmannHartreePerKelvin, 3);
+      std::cout << fmt::format(
+          "  LAPACK alone, {} k-points of order {}, {} of {} eigenpairs used (one thread, best of 3):\n"
+          "    zhegvd all pairs {:.4f} s | zhegvx used pairs {:.4f} s | faster per k-point {:.4f} s\n"
+          "    total / LAPACK alone {:.2f} | share of the total in LAPACK (eigensolver) {:.1f}%\n"
+          "    zpotrf of S(k), reused by SCC iterations: {:.4f} s per evaluation\n",
+          ref.kpoints, ref.orbitals, ref.vectorsUsed, ref.kpoints * ref.orbitals, ref.allPairs,
+          ref.usedPairs, ref.best, t.perEvaluation / ref.best,
+          100 * t.eigensolver / t.perEvaluation, ref.choleskyFactor);
+    }
   return 0;
 }
 
@@ -171,6 +217,7 @@ Command makeBenchDftbCommand() {
   struct Opts {
     std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf";
     int repeats = 3;
+    bool comparePaths = false;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);
@@ -179,10 +226,12 @@ Command makeBenchDftbCommand() {
     auto* s = bench.add_subcommand("dftb", "time per energy+forces evaluation, eigensolver share");
     s->add_option("--table", o->table, "C-C Slater-Koster table");
     s->add_option("--repeats", o->repeats, "evaluations to average");
+    s->add_flag("--compare-paths", o->comparePaths,
+                "time every case with each eigenvector path forced (and more cell sizes)");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [o] { return benchDftb(o->table, o->repeats); };
+  c.run = [o] { return benchDftb(o->table, o->repeats, o->comparePaths); };
   return c;
 }
 

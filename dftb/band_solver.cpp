@@ -39,12 +39,14 @@ struct BlasThreadsOff {
 
 // Buffers of one thread, sized once before the k loop.
 struct ThreadWork {
-  ComplexMatrix hk, sk, x, y;  // hk: H(k) when the eigenvectors are not kept
-  Eigen::MatrixXd hr, sr;
+  ReducedProblem<std::complex<double>> hk;  // H(k) when nothing is kept per k-point
+  ReducedProblem<double> hr;
+  ComplexMatrix sk, c, x, y;  // c: eigenvectors of the occupied states (OccupiedOnly)
+  Eigen::MatrixXd sr, cr;
   GeneralizedEigensolver solver;
   std::vector<OrbitalBlock> p, w;
   Eigen::VectorXd onsite;
-  double tAssembly = 0, tSolve = 0;
+  double tAssembly = 0, tSolve = 0, tVectors = 0, tDensity = 0;
 };
 }  // namespace
 
@@ -58,36 +60,66 @@ BandGeometry::BandGeometry(const ObjectiveCell& cell, const ParameterSet& params
     electrons += params.species(cell.species[a]).valenceElectrons;
 }
 
+OverlapFactors::OverlapFactors(const BandGeometry& geo, double byteBudget) {
+  const auto& kpts = geo.grid.points();
+  const int nk = static_cast<int>(kpts.size());
+  const double n = geo.layout.total;
+  for (const auto& kp : kpts) bytes += n * n * (kp.realPhases ? 8.0 : 16.0);
+  kept = bytes <= byteBudget;
+  if (!kept) return;
+  complex.resize(nk);
+  real.resize(nk);
+  ready.assign(nk, 0);
+  for (int k = 0; k < nk; ++k) {
+    if (kpts[k].realPhases) real[k].resize(geo.layout.total, geo.layout.total);
+    else complex[k].resize(geo.layout.total, geo.layout.total);
+  }
+}
+
 BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geo, const std::vector<OrbitalBlock>& h,
-                        const Eigen::VectorXd& onsiteShift, double kT, bool density) {
+                        const Eigen::VectorXd& onsiteShift, double kT, bool density,
+                        EigenvectorPath requestedPath, OverlapFactors* factors) {
+  using Mode = GeneralizedEigensolver::Mode;
   const auto& kpts = geo.grid.points();
   const int nk = static_cast<int>(kpts.size());
   const int n = geo.layout.total;
   BandSolution sol;
   sol.levels.assign(nk, Eigen::VectorXd(n));
-  // Eigenvectors are needed only for the density matrices; without them LAPACK is asked for
-  // eigenvalues alone.
-  std::vector<ComplexMatrix> vectors(density ? nk : 0, ComplexMatrix(n, n));
+  sol.path = resolveEigenvectorPath(requestedPath, n);
+  const bool subset = sol.path == EigenvectorPath::OccupiedOnly;
+  const Mode mode = !density ? Mode::ValuesOnly : subset ? Mode::OccupiedOnly : Mode::AllVectors;
+  if (factors && !(factors->kept && static_cast<int>(factors->ready.size()) == nk)) factors = nullptr;
   sol.weights.resize(nk);
   bool anyReal = false;
   for (int k = 0; k < nk; ++k) {
     sol.weights[k] = kpts[k].weight;
     anyReal = anyReal || kpts[k].realPhases;
   }
+  // With density, every k-point keeps its eigenvectors (AllVectors) or its tridiagonal form
+  // (OccupiedOnly) until the Fermi level is known; without, LAPACK is asked for eigenvalues
+  // alone and nothing is kept.
+  std::vector<ReducedProblem<std::complex<double>>> keptComplex(density ? nk : 0);
+  std::vector<ReducedProblem<double>> keptReal(density ? nk : 0);
+  for (int k = 0; k < nk && density; ++k)
+    kpts[k].realPhases ? keptReal[k].resize(n) : keptComplex[k].resize(n);
   const int nThreads = std::max(1, std::min(omp_get_max_threads(), nk));
   std::vector<ThreadWork> work(nThreads);
   for (auto& w : work) {
     w.sk.resize(n, n);
-    if (!density) w.hk.resize(n, n);
+    if (!density) w.hk.resize(n);
     w.solver.resize(n);
     if (anyReal) {
-      w.hr.resize(n, n);
+      if (!density) w.hr.resize(n);
       w.sr.resize(n, n);
     }
     if (density) {
       w.x.resize(n, n);
       w.y.resize(n, n);
+      if (subset) {
+        w.c.resize(n, n);
+        if (anyReal) w.cr.resize(n, n);
+      }
       w.p.assign(geo.images.pairs().size(), OrbitalBlock::Zero());
       w.w.assign(geo.images.pairs().size(), OrbitalBlock::Zero());
       w.onsite = Eigen::VectorXd::Zero(n);
@@ -95,6 +127,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   }
   const auto t1 = Clock::now();
 
+  // Pass 1: assembly, the standard problem, all eigenvalues.
   std::string failure;
   {
     BlasThreadsOff blasOff;
@@ -104,23 +137,29 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       const HelicalKPoint& kp = kpts[k];
       try {
         const auto a = Clock::now();
+        const bool reuse = factors && factors->ready[k];
         if (kp.realPhases) {
-          assembleBlochReal(cell, params, geo.layout, geo.images, h, geo.s, geo.grid, kp, w.hr,
+          auto& hr = density ? keptReal[k] : w.hr;
+          assembleBlochReal(cell, params, geo.layout, geo.images, h, geo.s, geo.grid, kp, hr.a,
                             w.sr, onsiteShift);
           const auto b = Clock::now();
-          w.solver.solveReal(w.hr, w.sr, sol.levels[k], density, "band structure (real k-point)");
-          if (density) vectors[k] = w.hr.cast<std::complex<double>>();
+          w.solver.reduce(hr, w.sr, reuse ? &factors->real[k] : nullptr, sol.levels[k], mode,
+                          "band structure (real k-point)");
+          if (factors && !reuse) factors->real[k].triangularView<Eigen::Lower>() = w.sr;
           w.tAssembly += seconds(a, b);
           w.tSolve += seconds(b, Clock::now());
         } else {
-          ComplexMatrix& hk = density ? vectors[k] : w.hk;
-          assembleBloch(cell, params, geo.layout, geo.images, h, geo.s, geo.grid, kp, hk, w.sk,
+          auto& hk = density ? keptComplex[k] : w.hk;
+          assembleBloch(cell, params, geo.layout, geo.images, h, geo.s, geo.grid, kp, hk.a, w.sk,
                         onsiteShift);
           const auto b = Clock::now();
-          w.solver.solveComplex(hk, w.sk, sol.levels[k], density, "band structure");
+          w.solver.reduce(hk, w.sk, reuse ? &factors->complex[k] : nullptr, sol.levels[k], mode,
+                          "band structure");
+          if (factors && !reuse) factors->complex[k].triangularView<Eigen::Lower>() = w.sk;
           w.tAssembly += seconds(a, b);
           w.tSolve += seconds(b, Clock::now());
         }
+        if (factors && !reuse) factors->ready[k] = 1;
       } catch (const std::exception& e) {
 #pragma omp critical
         failure = std::string(e.what()) + " (kappa = " + std::to_string(kp.kappa) +
@@ -144,24 +183,45 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   sol.timeEigensolver = (tA + tS) > 0 ? loop * tS / (tA + tS) : 0.0;
   if (!density) return sol;
 
-  // Density and energy-weighted density folded onto the image pairs.
+  // Pass 2: the eigenvectors of the states that carry charge (OccupiedOnly), then the density
+  // and energy-weighted density folded onto the image pairs.
+  sol.statesUsed.assign(nk, 0);
   {
     BlasThreadsOff blasOff;
 #pragma omp parallel for num_threads(nThreads) schedule(dynamic)
     for (int k = 0; k < nk; ++k) {
       ThreadWork& w = work[omp_get_thread_num()];
-      const Eigen::VectorXd& f = sol.filling.occupations[k];
-      const Eigen::VectorXd& e = sol.levels[k];
-      int nocc = 0;
-      while (nocc < n && f[nocc] > 1e-15) ++nocc;  // ascending levels: occupations decrease
-      const auto& c = vectors[k];
-      w.x.leftCols(nocc).noalias() = c.leftCols(nocc) * f.head(nocc).cwiseSqrt().asDiagonal();
-      w.y.leftCols(nocc).noalias() = w.x.leftCols(nocc) * e.head(nocc).asDiagonal();
-      accumulateDensityBlocks(geo.layout, geo.images, geo.grid, kpts[k], sol.weights[k],
-                              w.x.leftCols(nocc), w.y.leftCols(nocc), w.p, w.w);
-      w.onsite += sol.weights[k] * w.x.leftCols(nocc).rowwise().squaredNorm();
+      try {
+        const Eigen::VectorXd& f = sol.filling.occupations[k];
+        const Eigen::VectorXd& e = sol.levels[k];
+        const int m = occupiedStateCount(e, f);
+        sol.statesUsed[k] = m;
+        const auto a = Clock::now();
+        const auto sqrtF = f.head(m).cwiseSqrt().asDiagonal();
+        if (kpts[k].realPhases) {
+          if (subset) w.solver.lowestVectors(keptReal[k], m, w.cr, "band structure (real k-point)");
+          const Eigen::MatrixXd& c = subset ? w.cr : keptReal[k].a;
+          w.x.leftCols(m) = (c.leftCols(m) * sqrtF).cast<std::complex<double>>();
+        } else {
+          if (subset) w.solver.lowestVectors(keptComplex[k], m, w.c, "band structure");
+          const ComplexMatrix& c = subset ? w.c : keptComplex[k].a;
+          w.x.leftCols(m).noalias() = c.leftCols(m) * sqrtF;
+        }
+        const auto b = Clock::now();
+        w.y.leftCols(m).noalias() = w.x.leftCols(m) * e.head(m).asDiagonal();
+        accumulateDensityBlocks(geo.layout, geo.images, geo.grid, kpts[k], sol.weights[k],
+                                w.x.leftCols(m), w.y.leftCols(m), w.p, w.w);
+        w.onsite += sol.weights[k] * w.x.leftCols(m).rowwise().squaredNorm();
+        w.tVectors += seconds(a, b);
+        w.tDensity += seconds(b, Clock::now());
+      } catch (const std::exception& e) {
+#pragma omp critical
+        failure = std::string(e.what()) + " (kappa = " + std::to_string(kpts[k].kappa) +
+                  ", mu = " + std::to_string(kpts[k].mu) + ")";
+      }
     }
   }
+  if (!failure.empty()) throw NumericalError(failure);
   for (int t = 1; t < nThreads; ++t) {
     for (size_t p = 0; p < work[0].p.size(); ++p) {
       work[0].p[p] += work[t].p[p];
@@ -169,10 +229,17 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
     }
     work[0].onsite += work[t].onsite;
   }
+  double tV = 0, tD = 0;
+  for (const auto& w : work) {
+    tV += w.tVectors;
+    tD += w.tDensity;
+  }
   sol.p = std::move(work[0].p);
   sol.w = std::move(work[0].w);
   sol.onsiteDensity = std::move(work[0].onsite);
-  sol.timeDensity = seconds(t3, Clock::now());
+  const double pass2 = seconds(t3, Clock::now());
+  sol.timeEigensolver += (tV + tD) > 0 ? pass2 * tV / (tV + tD) : 0.0;
+  sol.timeDensity = (tV + tD) > 0 ? pass2 * tD / (tV + tD) : pass2;
   return sol;
 }
 

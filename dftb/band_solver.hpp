@@ -29,6 +29,22 @@ struct BandGeometry {
   double electrons = 0.0;  // sum of the neutral atoms' valence occupations
 };
 
+// The Cholesky factors L(k) of S(k) = L L^H at every k-point of one geometry, filled by the first
+// solveBands() that receives them and reused by every later one on the same geometry: S does
+// not depend on the charges, so the SCC iterations skip potrf. Kept only when they fit in
+// `byteBudget` (n^2 scalars per k-point; a large ring with thousands of angular points would
+// not), otherwise `kept` is false and every solve factors S itself. Storage is allocated here,
+// never in the k loop.
+struct OverlapFactors {
+  explicit OverlapFactors(const BandGeometry& geometry,
+                          double byteBudget = 1024.0 * 1024.0 * 1024.0);
+  bool kept = false;
+  double bytes = 0;
+  std::vector<ComplexMatrix> complex;  // per k-point with complex phases
+  std::vector<Eigen::MatrixXd> real;   // per k-point with real phases
+  std::vector<char> ready;             // per k-point: the factor holds L(k)
+};
+
 struct BandSolution {
   std::vector<Eigen::VectorXd> levels;  // per k-point, ascending
   std::vector<double> weights;          // per k-point
@@ -38,13 +54,21 @@ struct BandSolution {
   std::vector<OrbitalBlock> p, w;
   Eigen::VectorXd onsiteDensity;
   // Wall-clock seconds.
+  // timeEigensolver: every LAPACK step (both passes of the OccupiedOnly path); timeDensity:
+  // the density blocks only.
   double timeAssembly = 0, timeEigensolver = 0, timeFilling = 0, timeDensity = 0;
+  EigenvectorPath path = EigenvectorPath::AllVectors;  // the one taken (density only)
+  std::vector<int> statesUsed;  // per k-point: eigenvectors entering the density (density only)
 };
 
 // h: the real-space H blocks per image pair (H0, or H0 plus an SCC shift); onsiteShift: empty,
 // or one energy per cell atom added to its on-site diagonal (Hartree). kT > 0 (Hartree).
+// path: how the eigenvectors are computed (the results agree to rounding; see eigensolver.hpp);
+// factors: Cholesky factors of S(k) kept across solves of this geometry (or none).
 BandSolution solveBands(const objective::ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geometry, const std::vector<OrbitalBlock>& h,
-                        const Eigen::VectorXd& onsiteShift, double kT, bool density);
+                        const Eigen::VectorXd& onsiteShift, double kT, bool density,
+                        EigenvectorPath path = EigenvectorPath::Automatic,
+                        OverlapFactors* factors = nullptr);
 
 }  // namespace mesochain::dftb

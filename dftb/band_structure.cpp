@@ -68,7 +68,8 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   const auto t1 = Clock::now();
   const bool wantDensity = request.gradient || request.strain;
   const BandSolution sol = solveBands(cell, params, geo, geo.h0, Eigen::VectorXd(),
-                                      settings_.electronicTemperature, wantDensity);
+                                      settings_.electronicTemperature, wantDensity,
+                                      settings_.eigenvectors);
   out.energy = sol.filling.bandEnergy - sol.filling.entropyTerm;
   reportBandSolution(geo, sol, settings_.electronicTemperature, out);
   out.extras["time_setup"] = std::chrono::duration<double>(t1 - t0).count();

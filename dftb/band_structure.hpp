@@ -9,6 +9,7 @@
 // time_forces, in seconds).
 #include <memory>
 
+#include "dftb/eigensolver.hpp"
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
 #include "objective/core/kgrid.hpp"
@@ -19,6 +20,9 @@ struct BandSettings {
   int helicalKPoints = 1;                 // kappa points on the whole zone
   objective::AngularSampling angular;     // all mu, or sampled
   double electronicTemperature = 0.0;     // k_B T, Hartree (> 0)
+  // How the eigenvectors for forces are computed; every path gives the same results to
+  // rounding (tests/dftb/test_eigenvector_paths.cpp), Automatic picks the faster by size.
+  EigenvectorPath eigenvectors = EigenvectorPath::Automatic;
 };
 
 class BandStructureTerm : public EnergyTerm {

@@ -104,6 +104,8 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
       warm = true;
     }
   std::vector<OrbitalBlock> h(pairs.size());
+  // S(k) is the same in every iteration: its Cholesky factors are computed once.
+  OverlapFactors overlapFactors(geo);
   std::vector<double> energies, residuals;
   BandSolution sol;
   double energy = 0, h0Energy = 0, sccEnergy = 0, timeIterations = 0;
@@ -116,7 +118,7 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     v = gamma * dqIn;
     for (size_t p = 0; p < pairs.size(); ++p)
       h[p] = geo.h0[p] + (0.5 * (v[pairs[p].i] + v[pairs[p].j])) * geo.s[p];
-    sol = solveBands(cell, params, geo, h, v, kT, true);
+    sol = solveBands(cell, params, geo, h, v, kT, true, band_.eigenvectors, &overlapFactors);
     const Eigen::VectorXd q = mullikenPopulations(geo.layout, geo.images, sol.onsiteDensity,
                                                   sol.p, geo.s);
     dqOut = q - q0;
