@@ -31,10 +31,12 @@ void forEachField(S& s, F&& f) {
 template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, dftb::BandSettings>
 void forEachField(S& s, F&& f) {
-  auto& [helicalKPoints, angular, electronicTemperature] = s;
+  auto& [helicalKPoints, angular, electronicTemperature, eigenvectors] = s;
   f("helical_kpoints", helicalKPoints, FieldRole::Result);
   f("angular", angular, FieldRole::Result);
   f("electronic_temperature_hartree", electronicTemperature, FieldRole::Result);
+  // The eigenvector path gives the same results to rounding (tests/dftb/test_eigenvector_paths.cpp).
+  f("eigenvectors", eigenvectors, FieldRole::Run);
 }
 
 template <class S, class F>
