@@ -326,9 +326,14 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.checkEvery < 1) t.fail("check_every", std::to_string(st.checkEvery), "at least 1");
     st.minimumSteps = t.integer("minimum_steps", 0);
     if (t.has("add_effects")) st.addEffects = t.strings("add_effects");
-    for (const std::string& e : st.addEffects)
+    for (const std::string& e : st.addEffects) {
       if (std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end())
         t.fail("add_effects", "\"" + e + "\", already in effects", "effects named for this stage only");
+      // Effects with evolving state (bonds, contacts: neighbour lists, dissipated work) are
+      // named for the whole run; a stage adds numerical damping.
+      if (e != "local_damping" && e != "viscous_damping")
+        t.fail("add_effects", "\"" + e + "\"", "\"local_damping\" or \"viscous_damping\" (other effects are named in effects, for every stage)");
+    }
     st.energiesCsv = t.string("energies_csv", st.name + "-energies.csv");
     st.energiesEvery = t.integer("energies_every", 100);
     if (st.energiesEvery < 1) t.fail("energies_every", std::to_string(st.energiesEvery), "at least 1");

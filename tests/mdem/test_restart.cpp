@@ -307,6 +307,9 @@ TEST_F(Restart, StageErrorsNameTheKey) {
   expectError(t, "stages");
   expectError(good + "[tensile]\ngrip_width_nm = 3.0\nstrain_rate_per_ns = 0.5\n", "tensile");
   t = good;
+  t.replace(t.find("add_effects = [\"local_damping\"]"), 31, "add_effects = [\"local_damping\", \"vdw_contact\"]");
+  expectError(t, "stages[0].add_effects");
+  t = good;
   t.replace(t.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nsteps = 5\n");
   expectError(t, "run.steps");
 }
