@@ -398,19 +398,5 @@ void ContactDampingEffect::addStabilityTerms(std::vector<ContactStabilityTerms>&
   }
 }
 
-ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle) {
-  ContactCount c;
-  const double cosMax = std::cos(maxAngle);
-  for (const auto& [i, j] : nb.list().pairs()) {
-    const Segment a = nb.segment(b, i), s = nb.imageNear(b, j, a.centre);
-    double sa, sb;
-    closestPoints(a, s, &sa, &sb);
-    const double gap = (a.centre + sa * a.axis - s.centre - sb * s.axis).norm() - nb.radius(b.type[i]) - nb.radius(b.type[j]);
-    if (gap > maxGap) continue;
-    ++c.inContact;
-    if (std::abs(a.axis.dot(s.axis)) >= cosMax) ++c.aligned;
-  }
-  return c;
-}
 
 }  // namespace mesochain::mdem

@@ -153,12 +153,6 @@ class ContactDampingEffect : public Effect {
 // and 10 pN ns/nm^2; this estimate admits gamma up to about 2.7 there.
 inline constexpr int kContactCoordination = 6;
 
-// Pairs in van der Waals contact (wall gap of the closest points below maxGap) whose axes make
-// an angle below maxAngle (either direction): the "aligned pairs" of the tensile analysis.
-struct ContactCount {
-  int inContact = 0;
-  int aligned = 0;
-};
-ContactCount countContacts(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle);
+// Contacts, aligned pairs, bundles and orientation of a network: contacts/network_structure.hpp.
 
 }  // namespace mesochain::mdem
