@@ -43,8 +43,6 @@ class ContactNeighbourhood {
   // at the same steps as an uninterrupted one.
   void saveList(BinaryWriter& out) const { list_.save(out); }
   void loadList(BinaryReader& in, int elementCount) { list_.load(in, elementCount); }
-  // Accumulated seconds spent rebuilding and checking the list (for benchmarks).
-  double seconds = 0.0;
 
  private:
   Periodicity periodicity_;
@@ -76,8 +74,6 @@ class VdwContactEffect : public Effect {
   // Tube types: the pair potential (null for bricks). Bricks: the face-to-face model (null for tubes).
   const TubePairPotential* potential(int typeA, int typeB) const;
   const FaceContactModel* faceModel() const { return face_.get(); }
-  double seconds = 0.0;  // in the pair kernels and the gather (for benchmarks)
-  double neighbourSeconds() const { return nb_->seconds; }
   const ContactNeighbourhood& neighbourhood() const { return *nb_; }
   long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
 
