@@ -160,11 +160,11 @@ void TensileRecorder::writePlot(const std::string& path) const {
   for (std::string& n : names)
     if (n == "vdw") n = "van der Waals";
   const int width = 900, height = 420;
-  plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts against strain");
+  plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts and bundles against strain");
   fs.x.label = fe.x.label = fc.x.label = "strain";
   fs.y.label = "stress (MPa)";
   fe.y.label = "energy (zJ)";
-  fc.y.label = "pairs";
+  fc.y.label = "pairs, elements";
   fs.add(fmt::format("stress (A = {:.4g} nm^2)", area_), strain, stress);
   for (std::size_t k = 0; k < names.size(); ++k) {
     plot::SeriesStyle style;
