@@ -106,6 +106,10 @@ Command makeDemCommand() {
                                  "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
                                  st.finalStrain, st.finalStress, st.peakStress, st.initialStress, st.crossSection,
                                  st.gaugeLength, st.tensileCsv);
+      if (st.tensile && st.elastic.samples >= 2)
+        std::cout << fmt::format("elastic slope (Young's modulus of the specimen) {:.6g} MPa over strain {:.4g} - {:.4g} "
+                                 "({} samples, R^2 {:.4f})\n",
+                                 st.elastic.slope, st.elastic.from, st.elastic.to, st.elastic.samples, st.elastic.r2);
     }
     if (opt->profile) {
       std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",

@@ -155,6 +155,7 @@ class StageRun {
       for (const TensileSample& t : tensile_->samples()) out.peakStress = std::max(out.peakStress, t.stress);
       out.initialStress = tensile_->samples().front().stress;
       out.crossSection = scene_.tensile.crossSection, out.gaugeLength = scene_.tensile.gaugeLength;
+      out.elastic = fitElasticSlope(tensile_->samples(), 0.0, kElasticStrain);
       out.tensileCsv = prepare(scene_.tensile.csv);
     }
   }

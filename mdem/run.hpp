@@ -7,6 +7,7 @@
 
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
+#include "mdem/tensile.hpp"
 
 namespace mesochain::mdem {
 
@@ -34,6 +35,7 @@ struct StageSummary {
   bool tensile = false;
   double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;  // MPa
   double crossSection = 0.0, gaugeLength = 0.0;  // nm^2, nm
+  ElasticFit elastic;            // the slope below 3 % strain (tensile.hpp)
   std::string tensileCsv;
 };
 

@@ -137,6 +137,24 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
   return samples_.back();
 }
 
+ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double from, double to) {
+  ElasticFit f;
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0, syy = 0.0;
+  f.from = to, f.to = from;
+  for (const TensileSample& t : samples) {
+    if (t.strain < from || t.strain > to) continue;
+    sx += t.strain, sy += t.stress, sxx += t.strain * t.strain, sxy += t.strain * t.stress, syy += t.stress * t.stress;
+    f.from = std::min(f.from, t.strain), f.to = std::max(f.to, t.strain);
+    ++f.samples;
+  }
+  const double n = f.samples, dxx = n * sxx - sx * sx, dyy = n * syy - sy * sy, dxy = n * sxy - sx * sy;
+  if (f.samples < 2 || !(dxx > 0.0)) return {f.samples, 0.0, 0.0, 0.0, f.from, f.to};
+  f.slope = dxy / dxx;
+  f.intercept = (sy - f.slope * sx) / n;
+  f.r2 = dyy > 0.0 ? dxy * dxy / (dxx * dyy) : 1.0;
+  return f;
+}
+
 void TensileRecorder::writePlot(const std::string& path) const {
   std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
   // Each stored (potential) energy, the kinetic energy, the grip work and total - initial.
@@ -166,6 +184,14 @@ void TensileRecorder::writePlot(const std::string& path) const {
   fe.y.label = "energy (zJ)";
   fc.y.label = "pairs, elements";
   fs.add(fmt::format("stress (A = {:.4g} nm^2)", area_), strain, stress);
+  const ElasticFit fit = fitElasticSlope(samples_, 0.0, kElasticStrain);
+  if (fit.samples >= 2) {
+    plot::SeriesStyle dashed;
+    dashed.color = plot::paletteColor(1);
+    dashed.dashed = true;
+    fs.add(fmt::format("elastic fit, strain {:.3g} - {:.3g}: slope {:.4g} MPa (R^2 {:.3f})", fit.from, fit.to, fit.slope, fit.r2),
+           {fit.from, fit.to}, {fit.intercept + fit.slope * fit.from, fit.intercept + fit.slope * fit.to}, dashed);
+  }
   for (std::size_t k = 0; k < names.size(); ++k) {
     plot::SeriesStyle style;
     style.color = plot::paletteColor(static_cast<int>(k));

@@ -48,6 +48,19 @@ struct TensileSample {
   double meanBundle = 0.0, orderParameter = 0.0, axisAlignment = 0.0;
 };
 
+// Least-squares line stress = intercept + slope * strain over the samples with strain in
+// [from, to]: the elastic slope (Young's modulus of the specimen, MPa) and how well a line fits.
+struct ElasticFit {
+  int samples = 0;                 // used (< 2: no fit, slope 0)
+  double slope = 0.0;              // MPa
+  double intercept = 0.0;          // MPa
+  double r2 = 0.0;                 // coefficient of determination
+  double from = 0.0, to = 0.0;     // strain range actually covered by the samples used
+};
+ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double from, double to);
+// The strain below which the reports fit the elastic slope (3 %).
+inline constexpr double kElasticStrain = 0.03;
+
 class TensileRecorder {
  public:
   // Opens the CSV (path) when not empty; resumeAt >= 0 appends to an interrupted run's CSV cut

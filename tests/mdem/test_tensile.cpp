@@ -60,16 +60,32 @@ TEST(MdemTensile, SingleTubeStressStrainSlopeIsYATubeOverAFilm) {
     rec.record(sim);
   }
   // Least-squares slope over the constant-velocity part (strain > 0.4 %).
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (const TensileSample& t : rec.samples())
-    if (t.strain > 0.004) sx += t.strain, sy += t.stress, sxx += t.strain * t.strain, sxy += t.strain * t.stress, ++n;
-  ASSERT_GT(n, 5);
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const ElasticFit fit = fitElasticSlope(rec.samples(), 0.004, 1.0);
+  ASSERT_GT(fit.samples, 5);
+  const double slope = fit.slope;
+  EXPECT_GT(fit.r2, 0.99);
   const double expected = 1e6 * units::kPi * kTubeRadius * kTubeRadius / kFilm;  // Y A / A_film, MPa
   std::printf("single tube: slope %.6g MPa, Y A / A_film %.6g MPa, final strain %.4f\n", slope, expected,
               rec.samples().back().strain);
   EXPECT_NEAR(slope, expected, 0.01 * expected);
+}
+
+TEST(MdemTensile, ElasticFitRecoversALineAndIgnoresSamplesOutsideItsRange) {
+  std::vector<TensileSample> samples;
+  for (int k = 0; k <= 10; ++k) {
+    TensileSample t;
+    t.strain = 0.005 * k;
+    t.stress = t.strain <= 0.03 ? 5.0 + 200.0 * t.strain : 1e3;  // beyond 3 %: not elastic
+    samples.push_back(t);
+  }
+  const ElasticFit f = fitElasticSlope(samples, 0.0, kElasticStrain);
+  EXPECT_EQ(f.samples, 7);
+  EXPECT_NEAR(f.slope, 200.0, 1e-9);
+  EXPECT_NEAR(f.intercept, 5.0, 1e-12);
+  EXPECT_NEAR(f.r2, 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(f.to, 0.03);
+  EXPECT_EQ(fitElasticSlope(samples, 0.1, 0.2).samples, 0);  // nothing in range: no fit
+  EXPECT_EQ(fitElasticSlope(samples, 0.1, 0.2).slope, 0.0);
 }
 
 TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
