@@ -4,6 +4,7 @@
 // uninterrupted run's; corrupt, truncated or foreign checkpoints are clear errors; a fresh run
 // into a folder with an interrupted run is refused.
 #include <omp.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -87,7 +88,9 @@ std::string slurp(const fs::path& p) {
 class Restart : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / fmt::format("mesochain-restart-{}", ::testing::UnitTest::GetInstance()->random_seed());
+    // One folder per process and test (ctest runs the tests of this file in parallel processes).
+    dir_ = fs::temp_directory_path() /
+           fmt::format("mesochain-restart-{}-{}", ::getpid(), ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     scenePath_ = (dir_ / "scene.toml").string();
