@@ -29,6 +29,9 @@ struct ElementType {
   // brick  I = m/12 (w^2+L^2, h^2+L^2, h^2+w^2);
   // cylinder I = (m/12 (3 r^2 + L^2), same, m r^2 / 2).
   Vec3 principalInertia() const;
+  // Radius of the element's outer surface for contacts and gaps (nm): a cylinder's radius, half a
+  // brick's thickness.
+  double contactRadius() const { return shape == Shape::Cylinder ? radius : 0.5 * thickness; }
   // Half extents along body x, y, z (nm), for visualisation.
   Vec3 halfExtents() const;
 };

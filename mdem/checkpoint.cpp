@@ -21,7 +21,9 @@ void hashValue(std::uint64_t& h, const T& v) {
   h = fnv1a(&v, sizeof(T), h);
 }
 
-void writeBodies(BinaryWriter& out, const Bodies& b) {
+}  // namespace
+
+void writeBodiesTo(BinaryWriter& out, const Bodies& b) {
   out.writeVector(b.position);
   out.writeVector(b.orientation);
   out.writeVector(b.velocity);
@@ -32,6 +34,7 @@ void writeBodies(BinaryWriter& out, const Bodies& b) {
   out.writeVector(b.accumulatedRotation);
 }
 
+namespace {
 template <class T>
 void readInto(BinaryReader& in, std::vector<T>& into, const char* what) {
   std::vector<T> v = in.readVector<T>(what);
@@ -40,7 +43,9 @@ void readInto(BinaryReader& in, std::vector<T>& into, const char* what) {
   into = std::move(v);
 }
 
-void readBodies(BinaryReader& in, Bodies& b) {
+}  // namespace
+
+void readBodiesFrom(BinaryReader& in, Bodies& b) {
   readInto(in, b.position, "positions");
   readInto(in, b.orientation, "orientations");
   readInto(in, b.velocity, "velocities");
@@ -50,7 +55,6 @@ void readBodies(BinaryReader& in, Bodies& b) {
   readInto(in, b.initialPosition, "initial positions");
   readInto(in, b.accumulatedRotation, "accumulated rotations");
 }
-}  // namespace
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed) {
   std::uint64_t h = seed == 0 ? 14695981039346656037ull : seed;
@@ -91,7 +95,7 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
   state.write<std::int64_t>(sim.stepCount());
   state.write(sim.time());
   state.write(sim.timeStep());
-  writeBodies(state, sim.bodies());
+  writeBodiesTo(state, sim.bodies());
   state.write<std::uint64_t>(sim.effects().size());
   for (const EffectPtr& e : sim.effects()) {
     state.write(e->name());
@@ -142,7 +146,7 @@ void CheckpointFile::restore(Simulation& sim) const {
   const double time = in.read<double>();
   if (in.read<double>() != sim.timeStep()) in.fail("a time step other than the rebuilt simulation's");
   State& state = sim.state();
-  readBodies(in, state.bodies);
+  readBodiesFrom(in, state.bodies);
   state.time = time;
   sim.setStepCount(step);
   in.expectCount("effects", sim.effects().size());
@@ -155,8 +159,5 @@ void CheckpointFile::restore(Simulation& sim) const {
     if (b.remaining() != 0) b.fail("effect \"" + name + "\" has more state than this version reads");
   }
 }
-
-void writeBodiesTo(BinaryWriter& out, const Bodies& b) { writeBodies(out, b); }
-void readBodiesFrom(BinaryReader& in, Bodies& b) { readBodies(in, b); }
 
 }  // namespace mesochain::mdem

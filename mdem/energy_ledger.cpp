@@ -38,9 +38,4 @@ std::vector<std::string> EnergyLedger::names() const {
   return n;
 }
 
-EnergyLedger& EnergyLedger::operator+=(const EnergyLedger& o) {
-  for (const LedgerEntry& e : o.entries_) add(e.name, e.kind, e.value);
-  return *this;
-}
-
 }  // namespace mesochain::mdem

@@ -41,9 +41,6 @@ class EnergyLedger {
   const std::vector<LedgerEntry>& entries() const { return entries_; }
   // Entry names in order (the layout of a CSV row).
   std::vector<std::string> names() const;
-  // Entry-wise sum; both ledgers must have the same names in the same order, or `o` only
-  // entries this one lacks (appended).
-  EnergyLedger& operator+=(const EnergyLedger& o);
 
  private:
   const LedgerEntry* find(std::string_view name) const;

@@ -137,10 +137,13 @@ class StageRun {
   // The stage's time series at the current step (every `every` steps, or always when forced).
   void record(bool force) {
     const long k = sim_.stepCount() - startStep_;
-    if (csv_ && (force || k % spec_.energiesEvery == 0)) csv_->write(sim_.stepCount(), sim_.time(), sim_.energies(), sim_.bodies());
-    if (plot_ && (force || k % plotEvery_ == 0)) plot_->record(sim_.time(), sim_.energies(), sim_.bodies());
-    if (tensile_ && (force || k % spec_.energiesEvery == 0)) {
-      const TensileSample& t = tensile_->record(sim_);
+    const bool series = force || k % spec_.energiesEvery == 0, plotted = plot_ && (force || k % plotEvery_ == 0);
+    if (!(series && (csv_ || tensile_)) && !plotted) return;
+    const EnergyLedger e = sim_.energies();  // once for every output of this step
+    if (csv_ && series) csv_->write(sim_.stepCount(), sim_.time(), e, sim_.bodies());
+    if (plotted) plot_->record(sim_.time(), e, sim_.bodies());
+    if (tensile_ && series) {
+      const TensileSample& t = tensile_->record(sim_, e);
       reachedStrain_ = scene_.tensile.finalStrain > 0.0 && t.strain >= scene_.tensile.finalStrain;
     }
   }
@@ -323,7 +326,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       const bool last = k == end;
       bool stop = false;
       if (stopCheck && k - stageStep >= spec.minimumSteps && (k - stageStep) % spec.checkEvery == 0 &&
-          sim.energies().kinetic() < spec.stopKineticEnergy) {
+          sim.kineticEnergy() < spec.stopKineticEnergy) {
         summary.stoppedByCriterion = true;
         stop = true;
       }

@@ -25,16 +25,6 @@ std::uint64_t hashFileText(const std::string& path, std::uint64_t seed) {
   return fnv1a(text.data(), text.size(), seed);
 }
 
-int findType(const std::vector<std::string>& names, const TomlTable& t, const std::string& key) {
-  const std::string n = t.string(key);
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == n) return static_cast<int>(i);
-  std::string list;
-  for (const auto& x : names) list += (list.empty() ? "" : ", ") + x;
-  t.fail(key, "\"" + n + "\"", list.empty() ? "a defined type (none is defined)"
-                                            : "one of the defined types: " + list);
-}
-
 // Element index: 0-based, negative counts from the end (-1 = last).
 int elementIndex(long i, int count, const TomlTable& t, const std::string& key) {
   const long j = i < 0 ? i + count : i;
@@ -100,12 +90,6 @@ BondType readBondType(const TomlTable& t) {
   return b;
 }
 
-std::vector<std::string> typeNames(const auto& types) {
-  std::vector<std::string> n;
-  for (const auto& t : types) n.push_back(t.name);
-  return n;
-}
-
 Quat readOrientation(const TomlTable& t) {
   if (!t.has("orientation")) return {};
   const std::vector<double> q = t.numbers("orientation");
@@ -117,11 +101,10 @@ Quat readOrientation(const TomlTable& t) {
 
 void readElements(const TomlTable& root, Scene& s) {
   if (!root.has("elements")) return;
-  const auto names = typeNames(s.elementTypes);
   for (const TomlTable& t : root.tables("elements")) {
     t.allowOnly({"type", "position_nm", "orientation", "velocity_nm_per_ns",
                  "angular_velocity_rad_per_ns"});
-    const int type = findType(names, t, "type");
+    const int type = findNamed(s.elementTypes, t, "type");
     s.bodies.add(type, s.elementTypes[type], t.vec3("position_nm"), readOrientation(t));
     const int i = s.bodies.size() - 1;
     s.bodies.velocity[i] = t.vec3("velocity_nm_per_ns", Vec3::Zero());
@@ -135,8 +118,8 @@ void readFilaments(const TomlTable& root, Scene& s) {
     t.allowOnly({"element_type", "bond_type", "count", "start_nm", "direction", "thickness_axis",
                  "spacing_nm"});
     FilamentSpec f;
-    f.elementType = findType(typeNames(s.elementTypes), t, "element_type");
-    f.bondType = findType(typeNames(s.bondTypes), t, "bond_type");
+    f.elementType = findNamed(s.elementTypes, t, "element_type");
+    f.bondType = findNamed(s.bondTypes, t, "bond_type");
     const long n = t.integer("count");
     // Element indices are int; a scene holds at most 1e8 elements (about 30 GB of state).
     constexpr long kMaxElements = 100000000;
@@ -155,7 +138,6 @@ void readFilaments(const TomlTable& root, Scene& s) {
 
 void readBonds(const TomlTable& root, Scene& s) {
   if (!root.has("bonds")) return;
-  const auto names = typeNames(s.bondTypes);
   for (const TomlTable& t : root.tables("bonds")) {
     t.allowOnly({"elements", "type"});
     const std::vector<long> e = t.integers("elements");
@@ -165,7 +147,7 @@ void readBonds(const TomlTable& root, Scene& s) {
     if (a == b) t.fail("elements", "a bond of an element to itself", "two different elements");
     if ((s.bodies.position[a] - s.bodies.position[b]).norm() < 1e-9)
       t.fail("elements", "two elements at the same position", "distinct centres");
-    addBond(s, a, b, findType(names, t, "type"));
+    addBond(s, a, b, findNamed(s.bondTypes, t, "type"));
   }
 }
 

@@ -72,6 +72,10 @@ EnergyLedger Simulation::energies() const {
   return e;
 }
 
+double Simulation::kineticEnergy() const {
+  return kineticTranslational(state_.bodies) + kineticRotational(state_.bodies);
+}
+
 std::vector<std::string> Simulation::effectNames() const {
   std::vector<std::string> n;
   for (const auto& e : effects_) n.push_back(e->name());

@@ -26,6 +26,8 @@ class Simulation {
   // Kinetic energies ("kinetic_translational", "kinetic_rotational") and the entries of every
   // effect, in effect order.
   EnergyLedger energies() const;
+  // The kinetic part alone (translational + rotational): no effect is evaluated.
+  double kineticEnergy() const;
   const State& state() const { return state_; }
   State& state() { return state_; }
   const Bodies& bodies() const { return state_.bodies; }

@@ -19,7 +19,6 @@
 namespace mesochain::mdem {
 
 namespace {
-double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 
 double meanAxial(const Bodies& b, const std::vector<int>& grip, int axis) {
   double s = 0.0;
@@ -63,7 +62,7 @@ void setUpTensile(Scene& s) {
       throw InputError(s.source, "key tensile.cross_section_nm2", "nothing (and no [network] film)",
                        "the specimen's cross-section in nm^2");
     double r = 0.0;
-    for (const ElementType& e : s.elementTypes) r = std::max(r, effectiveRadius(e));
+    for (const ElementType& e : s.elementTypes) r = std::max(r, e.contactRadius());
     t.crossSection = s.filmSize[1 - a] * (s.filmSize.z() + 2.0 * r);
   }
   t.gripSpeed = 0.5 * t.strainRate * t.gaugeLength;
@@ -87,7 +86,7 @@ TensileRecorder::TensileRecorder(const Scene& scene, const std::string& csvPath,
   // The header follows at the first sample, when the ledger's entries are known.
 }
 
-const TensileSample& TensileRecorder::record(const Simulation& sim) {
+const TensileSample& TensileRecorder::record(const Simulation& sim, const EnergyLedger& energies) {
   const TensileSpec& t = scene_.tensile;
   const Bodies& b = sim.bodies();
   const int a = t.axis;
@@ -109,7 +108,7 @@ const TensileSample& TensileRecorder::record(const Simulation& sim) {
     (side == 0 ? s.forceLeft : s.forceRight) = sum;
   }
   s.stress = 0.5 * (s.forceLeft - s.forceRight) / area_;
-  s.energies = sim.energies();
+  s.energies = energies;
   if (!samples_.empty()) s.gripWork = samples_.back().gripWork + 0.5 * (lastPower_ + power) * (s.time - samples_.back().time);
   lastPower_ = power;
   if (const ContactNeighbourhood* nb = sim.contactNeighbourhood()) {

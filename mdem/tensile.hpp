@@ -66,8 +66,10 @@ class TensileRecorder {
   // Opens the CSV (path) when not empty; resumeAt >= 0 appends to an interrupted run's CSV cut
   // back to that length (the samples before it come from the checkpoint, loadState).
   TensileRecorder(const Scene& scene, const std::string& csvPath, std::int64_t resumeAt = -1);
-  // Samples the current state of `sim` (call at increasing times).
-  const TensileSample& record(const Simulation& sim);
+  // Samples the current state of `sim` (call at increasing times); `energies`: sim.energies(),
+  // when the caller has them already.
+  const TensileSample& record(const Simulation& sim) { return record(sim, sim.energies()); }
+  const TensileSample& record(const Simulation& sim, const EnergyLedger& energies);
   const std::vector<TensileSample>& samples() const { return samples_; }
   // PNG: stress-strain, energies against strain, contact and aligned pair counts.
   void writePlot(const std::string& path) const;

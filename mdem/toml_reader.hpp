@@ -56,4 +56,17 @@ class TomlTable {
   std::string path_;
 };
 
+// Index of the entry of `types` (anything with a `name`: element or bond types) that the string
+// at `key` names; an InputError listing the defined names otherwise.
+template <class Types>
+int findNamed(const Types& types, const TomlTable& t, const std::string& key) {
+  const std::string n = t.string(key);
+  std::string list;
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (types[i].name == n) return static_cast<int>(i);
+    list += (list.empty() ? "" : ", ") + types[i].name;
+  }
+  t.fail(key, "\"" + n + "\"", list.empty() ? "a defined type (none is defined)" : "one of the defined types: " + list);
+}
+
 }  // namespace mesochain::mdem

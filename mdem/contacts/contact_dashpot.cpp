@@ -33,6 +33,12 @@ double contactLength(const Segment& a, const Segment& b, double ra, double rb) {
   return 0.5 * (overlap(a, b) + overlap(b, a)) + (ra + rb) * sine;
 }
 
+double wallGap(const Segment& a, const Segment& b, double ra, double rb) {
+  double sa, sb;
+  closestPoints(a, b, &sa, &sb);
+  return (a.centre + sa * a.axis - b.centre - sb * b.axis).norm() - ra - rb;
+}
+
 ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,
                                  double ra, double rb, const Vec3& va, const Vec3& wa, const Vec3& vb,
                                  const Vec3& wb) {

@@ -18,6 +18,9 @@ namespace mesochain::mdem {
 
 // Closest points of two segments: parameters sa in [-la, la], sb in [-lb, lb].
 void closestPoints(const Segment& a, const Segment& b, double* sa, double* sb);
+// Wall-to-wall gap of two tubes of radii ra, rb along the segments: the distance of the closest
+// points of the axes minus both radii (negative: the walls interpenetrate).
+double wallGap(const Segment& a, const Segment& b, double ra, double rb);
 
 // Contact length lambda and weight s (see above).
 double contactLength(const Segment& a, const Segment& b, double radiusA, double radiusB);

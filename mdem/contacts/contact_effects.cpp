@@ -33,7 +33,6 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
 
 namespace {
 
-double effectiveRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 
 double maxHalfLength(const Scene& s) {
   double l = 0.0;
@@ -42,7 +41,7 @@ double maxHalfLength(const Scene& s) {
 }
 double maxRadius(const Scene& s) {
   double r = 0.0;
-  for (const ElementType& t : s.elementTypes) r = std::max(r, effectiveRadius(t));
+  for (const ElementType& t : s.elementTypes) r = std::max(r, t.contactRadius());
   return r;
 }
 
@@ -89,7 +88,7 @@ ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range)
       list_(range, scene.contacts.skin, scene.periodic) {
   for (const ElementType& t : scene.elementTypes) {
     halfLength_.push_back(0.5 * t.length);
-    radius_.push_back(effectiveRadius(t));
+    radius_.push_back(t.contactRadius());
   }
   for (int k = 0; k < 3; ++k)
     if (scene.periodic.periodic[k] && scene.periodic.length[k] <= 2.0 * list_.listRange())
@@ -102,7 +101,7 @@ ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range)
 }
 
 VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb, bool owner)
-    : scene_(scene), spec_(scene.contacts.vdw), rule_(gaussLegendre(scene.contacts.vdw.quadraturePoints)),
+    : scene_(scene), spec_(scene.contacts.vdw),
       typeCount_(static_cast<int>(scene.elementTypes.size())), types_(typeCount_ * typeCount_), nb_(std::move(nb)), ownsNeighbourhood_(owner) {
   std::vector<char> used(typeCount_, 0);
   for (int t : scene.bodies.type) used[t] = 1;
@@ -174,9 +173,7 @@ void VdwContactEffect::checkInitialOverlaps() const {
           std::abs(d.dot(sa.axis)) < 0.5 * std::max(ta.length, tb.length))
         what = fmt::format("bricks {} and {} overlapping (centres {:.3g} nm apart across the face)", i, j, std::abs(d.dot(n)));
     } else {
-      double u, v;
-      closestPoints(sa, sb, &u, &v);
-      const double gap = (sa.centre + u * sa.axis - sb.centre - v * sb.axis).norm() - ta.radius - tb.radius;
+      const double gap = wallGap(sa, sb, ta.radius, tb.radius);
       if (gap < 0.0) what = fmt::format("tubes {} and {} overlapping (wall gap {:.3g} nm)", i, j, gap);
     }
     if (!what.empty())
@@ -378,7 +375,7 @@ void ContactDampingEffect::addStabilityTerms(std::vector<ContactStabilityTerms>&
   for (std::size_t a = 0; a < used.size(); ++a) {
     if (!used[a]) continue;
     const ElementType& ta = scene.elementTypes[a];
-    const double l = ta.length, r = effectiveRadius(ta);
+    const double l = ta.length, r = ta.contactRadius();
     ContactStabilityTerms& c = terms[a];
     const ContactDampingSpec& d = spec_;
     const double lambda = l + r + rMax, rc = r + 0.5 * d.fullGap;

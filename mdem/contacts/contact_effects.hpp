@@ -90,7 +90,6 @@ class VdwContactEffect : public Effect {
   };
   const Scene& scene_;
   VdwContactSpec spec_;
-  QuadratureRule rule_;
   int typeCount_ = 0;
   std::vector<TypePair> types_;  // typeCount^2, symmetric, shared pointers by (min, max)
   std::unique_ptr<FaceContactModel> face_;  // when the elements are bricks

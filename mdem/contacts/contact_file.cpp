@@ -53,6 +53,15 @@ void validateContactSpec(const Scene& s) {
     if (s.periodic.periodic[k]) requireRange(s, "periodic.length_nm", s.periodic.length[k], 1e-3, 1e9, "nm");
 }
 
+int elementsPerTube(const TomlTable& t, const ElementType& e) {
+  const double tubeLength = t.positive("tube_length_nm");
+  const long n = std::lround(tubeLength / e.length);
+  if (n < 1 || n > 100000000 || std::abs(n * e.length - tubeLength) > 1e-6 * tubeLength)
+    t.fail("tube_length_nm", fmt::format("{:.6g} nm", tubeLength),
+           fmt::format("a whole number of elements of \"{}\" (length {:.6g} nm)", e.name, e.length));
+  return static_cast<int>(n);
+}
+
 void readNetworkTable(const TomlTable& root, Scene& s) {
   if (!root.has("network")) return;
   const TomlTable t = root.table("network");
@@ -61,25 +70,15 @@ void readNetworkTable(const TomlTable& root, Scene& s) {
   if (method == "deposition") return readDepositionTable(root, t, s);
   t.allowOnly({"method", "element_type", "bond_type", "size_nm", "tubes", "areal_density_ug_per_cm2", "tube_length_nm",
                "shape", "waviness_deg", "minimum_gap_nm", "seed"});
-  auto typeIndex = [&](const auto& types, const char* key) {
-    const std::string name = t.string(key);
-    for (std::size_t i = 0; i < types.size(); ++i)
-      if (types[i].name == name) return static_cast<int>(i);
-    t.fail(key, "\"" + name + "\"", "the name of a defined type");
-  };
   NetworkSpec n;
-  n.elementType = typeIndex(s.elementTypes, "element_type");
-  n.bondType = typeIndex(s.bondTypes, "bond_type");
+  n.elementType = findNamed(s.elementTypes, t, "element_type");
+  n.bondType = findNamed(s.bondTypes, t, "bond_type");
   const ElementType& e = s.elementTypes[n.elementType];
   n.size = t.vec3("size_nm");
   if (n.size.x() <= 0.0 || n.size.y() <= 0.0 || n.size.z() < 0.0)
     t.fail("size_nm", fmt::format("[{}, {}, {}]", n.size.x(), n.size.y(), n.size.z()),
            "positive film extents along x and y and a thickness >= 0 (nm)");
-  const double tubeLength = t.positive("tube_length_nm");
-  n.elementsPerTube = static_cast<int>(std::lround(tubeLength / e.length));
-  if (n.elementsPerTube < 1 || std::abs(n.elementsPerTube * e.length - tubeLength) > 1e-6 * tubeLength)
-    t.fail("tube_length_nm", fmt::format("{:.6g} nm", tubeLength),
-           fmt::format("a whole number of elements of \"{}\" (length {:.6g} nm)", e.name, e.length));
+  n.elementsPerTube = elementsPerTube(t, e);
   if (t.has("tubes") == t.has("areal_density_ug_per_cm2"))
     t.fail("tubes", t.has("tubes") ? "both tubes and areal_density_ug_per_cm2" : "neither",
            "exactly one of tubes, areal_density_ug_per_cm2");

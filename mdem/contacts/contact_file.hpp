@@ -15,6 +15,10 @@ void readContactTables(const TomlTable& root, Scene& s);
 // Scene::filmSize. Keys in docs/scene-file.md.
 void readNetworkTable(const TomlTable& root, Scene& s);
 
+// [network] tube_length_nm as a number of elements of type e (a whole number of lengths), for both
+// network methods; InputError naming the key otherwise.
+int elementsPerTube(const TomlTable& t, const ElementType& e);
+
 // Range checks shared with scenes built in C++ (throws InputError naming `source` and the key).
 void validateContactSpec(const Scene& s);
 

@@ -120,11 +120,10 @@ Quat frameAlong(const Vec3& axis) {
 }
 }  // namespace
 
-double depositionRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 
 DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
   const ElementType& type = scene.elementTypes.at(spec.elementType);
-  const double r = depositionRadius(type), l = type.length, hl = 0.5 * l;
+  const double r = type.contactRadius(), l = type.length, hl = 0.5 * l;
   const double clearance = 2.0 * r + spec.minimumGap;
   const double tubeLength = spec.elementsPerTube * l;
   const bool cut = spec.boundary == FilmBoundary::Cut;
@@ -248,9 +247,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
           domain.forNear(sk.centre, [&](int j) {
             if (j < first || std::abs(j - first - k) <= kSelfExclude || !clear) return;
             const Segment sj{sk.centre + domain.minimumImage(laid[j].centre - sk.centre), laid[j].axis, hl};
-            double sa, sb;
-            closestPoints(sk, sj, &sa, &sb);
-            if ((sk.centre + sa * sk.axis - sj.centre - sb * sj.axis).norm() - 2.0 * r < spec.minimumGap) clear = false;
+            if (wallGap(sk, sj, r, r) < spec.minimumGap) clear = false;
           });
         }
         if (!clear) {

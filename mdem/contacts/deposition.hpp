@@ -88,7 +88,5 @@ struct DepositionResult {
 // InputError naming scene.source and the key for requests that cannot be met.
 DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec);
 
-// Element thickness radius used for gaps (cylinder radius, half a brick's thickness).
-double depositionRadius(const ElementType& t);
 
 }  // namespace mesochain::mdem

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "mdem/contacts/contact_file.hpp"
 #include "mdem/contacts/deposition.hpp"
 #include "mdem/units.hpp"
 
@@ -27,29 +28,20 @@ void readDepositionTable(const TomlTable& root, const TomlTable& t, Scene& s) {
                "density_g_per_cm3", "thickness_nm", "boundary", "sheet_size_nm", "shape", "waviness_deg", "aligned_fraction",
                "alignment_axis", "alignment_angle_deg", "alignment_spread_deg", "drape_slope_deg", "drape_bend_deg",
                "minimum_gap_nm", "rest_shape", "seed"});
-  auto typeIndex = [&](const auto& types, const char* key) {
-    const std::string name = t.string(key);
-    for (std::size_t i = 0; i < types.size(); ++i)
-      if (types[i].name == name) return static_cast<int>(i);
-    t.fail(key, "\"" + name + "\"", "the name of a defined type");
-  };
   DepositionSpec d;
-  d.elementType = typeIndex(s.elementTypes, "element_type");
-  d.bondType = typeIndex(s.bondTypes, "bond_type");
+  d.elementType = findNamed(s.elementTypes, t, "element_type");
+  d.bondType = findNamed(s.bondTypes, t, "bond_type");
   const ElementType& e = s.elementTypes[d.elementType];
   std::tie(d.sizeX, d.sizeY) = readPair(t, "size_nm");
-  const double tubeLength = t.positive("tube_length_nm");
-  d.elementsPerTube = static_cast<int>(std::lround(tubeLength / e.length));
-  if (d.elementsPerTube < 1 || std::abs(d.elementsPerTube * e.length - tubeLength) > 1e-6 * tubeLength)
-    t.fail("tube_length_nm", fmt::format("{:.6g} nm", tubeLength),
-           fmt::format("a whole number of elements of \"{}\" (length {:.6g} nm)", e.name, e.length));
+  d.elementsPerTube = elementsPerTube(t, e);
+  const double tubeLength = d.elementsPerTube * e.length;
 
   const std::string boundary = t.string("boundary", "periodic");
   if (boundary != "periodic" && boundary != "cut") t.fail("boundary", "\"" + boundary + "\"", "\"periodic\" or \"cut\"");
   d.boundary = boundary == "cut" ? FilmBoundary::Cut : FilmBoundary::Periodic;
   if (d.boundary == FilmBoundary::Cut) {
     // Default sheet: the film plus one tube length plus one clearance along each axis.
-    const double margin = tubeLength + 2.0 * depositionRadius(e) + t.nonNegative("minimum_gap_nm", d.minimumGap);
+    const double margin = tubeLength + 2.0 * e.contactRadius() + t.nonNegative("minimum_gap_nm", d.minimumGap);
     if (t.has("sheet_size_nm")) std::tie(d.sheetX, d.sheetY) = readPair(t, "sheet_size_nm");
     else d.sheetX = d.sizeX + margin, d.sheetY = d.sizeY + margin;
   } else if (t.has("sheet_size_nm")) {

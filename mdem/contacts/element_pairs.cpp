@@ -11,7 +11,6 @@
 namespace mesochain::mdem {
 
 namespace {
-double gapRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 }  // namespace
 
 std::vector<ClosePair> closePairs(const Scene& scene, double maxGap, int excludeWithin) {
@@ -23,7 +22,7 @@ std::vector<ClosePair> closePairs(const Scene& scene, double maxGap, int exclude
   for (std::size_t t = 0; t < scene.elementTypes.size(); ++t) {
     halfLength[t] = 0.5 * scene.elementTypes[t].length;
     longest = std::max(longest, scene.elementTypes[t].length);
-    thickest = std::max(thickest, gapRadius(scene.elementTypes[t]));
+    thickest = std::max(thickest, scene.elementTypes[t].contactRadius());
   }
   // Centre distance below which the wall gap can be below maxGap: two half lengths + 2 R + gap.
   const double range = longest + 2.0 * thickest + std::max(0.0, maxGap);
@@ -34,10 +33,7 @@ std::vector<ClosePair> closePairs(const Scene& scene, double maxGap, int exclude
     const Segment si{b.position[i], rotate(b.orientation[i], Vec3::UnitZ()), halfLength[b.type[i]]};
     const Segment sj{b.position[i] + scene.periodic.minimumImage(b.position[j] - b.position[i]),
                      rotate(b.orientation[j], Vec3::UnitZ()), halfLength[b.type[j]]};
-    double sa, sb;
-    closestPoints(si, sj, &sa, &sb);
-    const double gap = (si.centre + sa * si.axis - sj.centre - sb * sj.axis).norm() - gapRadius(scene.elementTypes[b.type[i]]) -
-                       gapRadius(scene.elementTypes[b.type[j]]);
+    const double gap = wallGap(si, sj, scene.elementTypes[b.type[i]].contactRadius(), scene.elementTypes[b.type[j]].contactRadius());
     if (gap < maxGap) out.push_back({i, j, gap});
   }
   return out;

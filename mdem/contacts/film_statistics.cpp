@@ -16,7 +16,6 @@
 namespace mesochain::mdem {
 
 namespace {
-double gapRadius(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 }  // namespace
 
 FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o) {
@@ -30,7 +29,7 @@ FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o
   double rMax = 0.0, volume = 0.0, zMin = b.position[0].z(), zMax = zMin, zSum = 0.0;
   for (int i = 0; i < f.elements; ++i) {
     const ElementType& t = scene.elementTypes[b.type[i]];
-    const double r = gapRadius(t);
+    const double r = t.contactRadius();
     rMax = std::max(rMax, r);
     f.mass += b.mass[i];
     volume += units::kPi * (r + o.vdwShell) * (r + o.vdwShell) * t.length;

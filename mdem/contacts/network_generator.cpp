@@ -16,18 +16,12 @@ namespace {
 // Uniform double in [0, 1) from 53 random bits (portable, unlike std::uniform_real_distribution).
 double uniform(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
 
-double radiusOf(const ElementType& t) { return t.shape == Shape::Cylinder ? t.radius : 0.5 * t.thickness; }
 
-double wallGap(const Segment& a, const Segment& b, double ra, double rb) {
-  double sa, sb;
-  closestPoints(a, b, &sa, &sb);
-  return (a.centre + sa * a.axis - b.centre - sb * b.axis).norm() - ra - rb;
-}
 }  // namespace
 
 void generateNetwork(Scene& scene, const NetworkSpec& spec) {
   const ElementType& t = scene.elementTypes.at(spec.elementType);
-  const double r = radiusOf(t), l = t.length, reach = 2.0 * r + spec.minimumGap;
+  const double r = t.contactRadius(), l = t.length, reach = 2.0 * r + spec.minimumGap;
   if (spec.tubes < 1 || spec.elementsPerTube < 1)
     throw InputError(scene.source, "key network.tubes", fmt::format("{} tubes of {} elements", spec.tubes, spec.elementsPerTube),
                      "at least one tube of at least one element");
@@ -116,7 +110,7 @@ void checkNoOverlaps(const Scene& scene, double minimumGap) {
       if (topo.filament[i] == topo.filament[j]) continue;
       const Segment si = seg(i), sj = seg(j);
       if ((si.centre - sj.centre).norm() > si.halfLength + sj.halfLength + 10.0) continue;
-      const double gap = wallGap(si, sj, radiusOf(scene.elementTypes[b.type[i]]), radiusOf(scene.elementTypes[b.type[j]]));
+      const double gap = wallGap(si, sj, scene.elementTypes[b.type[i]].contactRadius(), scene.elementTypes[b.type[j]].contactRadius());
       if (gap < minimumGap)
         throw InputError(scene.source, "elements",
                          fmt::format("elements {} and {} of different tubes overlapping (wall gap {:.3g} nm)", i, j, gap),

@@ -22,10 +22,7 @@ NetworkStructure networkStructure(const ContactNeighbourhood& nb, const Bodies& 
   std::vector<char> joined(b.size(), 0);
   for (const auto& [i, j] : nb.list().pairs()) {
     const Segment a = nb.segment(b, i), s = nb.imageNear(b, j, a.centre);
-    double sa, sb;
-    closestPoints(a, s, &sa, &sb);
-    const double gap = (a.centre + sa * a.axis - s.centre - sb * s.axis).norm() - nb.radius(b.type[i]) - nb.radius(b.type[j]);
-    if (gap > maxGap) continue;
+    if (wallGap(a, s, nb.radius(b.type[i]), nb.radius(b.type[j])) > maxGap) continue;
     ++r.contacts;
     if (std::abs(a.axis.dot(s.axis)) < cosMax) continue;
     ++r.aligned;

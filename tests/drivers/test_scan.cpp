@@ -17,6 +17,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "carbon_fixture.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/drivers/scan.hpp"
@@ -27,17 +28,7 @@ using namespace mesochain;
 using namespace mesochain::objective;
 
 namespace {
-std::shared_ptr<const dftb::ParameterSet> carbon() {
-  return std::make_shared<const dftb::ParameterSet>(dftb::ParameterSet::load(
-      {"C"}, {{"C-C", std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/C-C.skf"}}, "test"));
-}
-dftb::CalculatorSettings settings(int kpoints) {
-  dftb::CalculatorSettings s;
-  s.band.helicalKPoints = kpoints;
-  s.band.electronicTemperature = 300 * units::kBoltzmannHartreePerKelvin;
-  return s;
-}
-const double kBond = 1.42 * units::kAngstromInBohr;
+using namespace mesochain::objective::testing;
 
 ScanSettings stretchSettings() {
   ScanSettings s;
