@@ -71,6 +71,20 @@ inline double surfaceReferenceEnergy(const Segment& a, const Segment& b, double 
   return 4.0 * lj.epsilon * lj.surfaceDensity * lj.surfaceDensity * e;
 }
 
+// The (10,10) tube model of the scene-file tests, as TOML: cylinders of 2 nm (325 carbon
+// atoms), Y = 1 TPa, G = 0.4 TPa.
+inline constexpr const char* kTubeModelToml = R"([[element_types]]
+name = "cnt1010"
+shape = "cylinder"
+radius_nm = 0.678
+length_nm = 2.0
+mass_ag = 0.0064823
+[[bond_types]]
+name = "cnt"
+young_modulus_MPa = 1.0e6
+shear_modulus_MPa = 0.4e6
+)";
+
 }  // namespace mesochain::mdem::testing
 
 #include "mdem/scene.hpp"

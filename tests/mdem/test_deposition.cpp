@@ -324,17 +324,7 @@ std::string writeScene(const std::string& name, const std::string& networkKeys, 
   const std::string path = (std::filesystem::temp_directory_path() / ("mdem-deposition-" + name + ".toml")).string();
   std::ofstream(path) << R"(format = 1
 effects = ["bonds"]
-[[element_types]]
-name = "cnt1010"
-shape = "cylinder"
-radius_nm = 0.678
-length_nm = 2.0
-mass_ag = 0.0064823
-[[bond_types]]
-name = "cnt"
-young_modulus_MPa = 1.0e6
-shear_modulus_MPa = 0.4e6
-[network]
+)" + std::string(testing::kTubeModelToml) + R"([network]
 method = "deposition"
 element_type = "cnt1010"
 bond_type = "cnt"

@@ -15,6 +15,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "contact_fixture.hpp"
+
 #include "common/errors.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
@@ -29,19 +31,9 @@ namespace fs = std::filesystem;
 // bonds (twist branches), vdW contacts and dashpots (neighbour list, dissipated work), local
 // damping, grips (grip work), the CSVs, XYZ, VTK frames and the plot.
 std::string sceneText(long steps, long checkpointEvery) {
-  return fmt::format(R"(format = 1
+  return fmt::format(fmt::runtime(R"(format = 1
 effects = ["bonds", "vdw_contact", "contact_damping", "local_damping"]
-[[element_types]]
-name = "cnt1010"
-shape = "cylinder"
-radius_nm = 0.678
-length_nm = 2.0
-mass_ag = 0.00648
-[[bond_types]]
-name = "cnt"
-young_modulus_MPa = 1.0e6
-shear_modulus_MPa = 0.4e6
-[network]
+)" + std::string(testing::kTubeModelToml) + R"([network]
 element_type = "cnt1010"
 bond_type = "cnt"
 size_nm = [70.0, 70.0, 6.0]
@@ -76,7 +68,7 @@ grip_width_nm = 3.0
 strain_rate_per_ns = 0.5
 ramp_ns = 0.01
 csv = "tensile.csv"
-)",
+)"),
                      steps, checkpointEvery);
 }
 
