@@ -268,7 +268,9 @@ double ContactDampingEffect::interactionRange(const Scene& s) {
 }
 
 void ContactDampingEffect::prepare(const State& state, double) {
-  nb_->update(state.bodies);  // (timed by dem --profile as this effect's prepare)
+  // The owner of the shared list refreshes it: vdw_contact, which comes first in the force
+  // order, when the scene has it (the displacement check would otherwise run twice a step).
+  if (ownsNeighbourhood_) nb_->update(state.bodies);
   results_.resize(nb_->list().pairs().size());
   power_.resize(results_.size());
 }
