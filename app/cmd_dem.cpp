@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
@@ -89,6 +90,11 @@ Command makeDemCommand() {
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",
         scene.bodies.size(), r.steps, r.timeStep, r.criticalTimeStep, r.time,
         r.stoppedByCriterion ? ", stopped: kinetic energy below threshold" : "");
+    if (r.outerStepRatio > 1)
+      std::cout << fmt::format("multiple time stepping: {} every {} steps (outer step {:.6g} ns, critical {:.6g} ns, "
+                               "limited by the {})\n",
+                               fmt::join(r.outerEffects, ", "), r.outerStepRatio, r.outerStepRatio * r.timeStep,
+                               r.outerCriticalTimeStep, r.outerLimitedBy);
     std::string stored, dissipated;
     for (const mdem::LedgerEntry& x : e.entries()) {
       std::string& to = x.kind == mdem::EnergyKind::Dissipated ? dissipated : stored;

@@ -13,7 +13,7 @@ namespace mesochain::mdem {
 
 namespace {
 constexpr char kMagic[8] = {'M', 'D', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: multiple time stepping (held outer forces, cycle start)
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 template <class T>
@@ -66,6 +66,8 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t seed) {
 std::uint64_t sceneFingerprint(const Scene& s) {
   std::uint64_t h = fnv1a(&s.inputHash, sizeof(s.inputHash));
   hashValue(h, s.run.timeStep), hashValue(h, s.run.timeStepFraction);
+  hashValue(h, s.run.outerStepRatio), hashValue(h, s.run.outerStepFraction);
+  for (const std::string& e : s.run.outerEffects) h = fnv1a(e.data(), e.size(), h);
   for (const ElementType& t : s.elementTypes)
     for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
   const Bodies& b = s.bodies;
@@ -96,6 +98,9 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
   state.write(sim.time());
   state.write(sim.timeStep());
   writeBodiesTo(state, sim.bodies());
+  state.write<std::int64_t>(sim.cycleStart());
+  state.writeVector(sim.state().heldForce);
+  state.writeVector(sim.state().heldTorque);
   state.write<std::uint64_t>(sim.effects().size());
   for (const EffectPtr& e : sim.effects()) {
     state.write(e->name());
@@ -149,6 +154,14 @@ void CheckpointFile::restore(Simulation& sim) const {
   readBodiesFrom(in, state.bodies);
   state.time = time;
   sim.setStepCount(step);
+  sim.setCycleStart(in.read<std::int64_t>());
+  for (std::vector<Vec3>* held : {&state.heldForce, &state.heldTorque}) {
+    std::vector<Vec3> v = in.readVector<Vec3>("held outer forces");
+    if (v.size() != held->size())
+      in.fail(fmt::format("held outer forces of {} elements where the scene's multiple time stepping holds {}", v.size(),
+                          held->size()));
+    *held = std::move(v);
+  }
   in.expectCount("effects", sim.effects().size());
   for (const EffectPtr& e : sim.effects()) {
     const std::string name = in.read<std::string>();

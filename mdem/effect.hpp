@@ -38,6 +38,9 @@ class ContactNeighbourhood;
 struct State {
   Bodies bodies;
   double time = 0.0;  // ns
+  // Multiple time stepping (stepper.hpp): the outer group's force and torque at the last
+  // boundary state, per element (empty without the splitting).
+  std::vector<Vec3> heldForce, heldTorque;
 };
 
 // Physical effects model the material; numerical damping (local / viscous) only drives a
@@ -59,6 +62,9 @@ class Effect {
   // belongs to one element (itemElement), the stepper may advance separate filaments on
   // separate threads with no barrier (stepper.hpp, ThreadPartition).
   virtual bool couplesFilaments() const { return false; }
+  // Dissipative physical forces (dashpots): their damping rate limits the step as tightly as
+  // the bonds do, so multiple time stepping leaves them on the inner step unless named.
+  virtual bool dissipates() const { return false; }
   virtual int itemElement(int /*k*/) const { return -1; }
   virtual void computeItemList(const State& state, double time, const int* items, int count) {
     for (int e = 0; e < count; ++e) computeItems(state, time, items[e], items[e] + 1);

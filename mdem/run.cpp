@@ -282,7 +282,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       }
       run->open(nullptr);
     }
-    if (r.timeStep == 0.0) r.timeStep = sim.timeStep(), r.criticalTimeStep = sim.stability().criticalTimeStep;
+    if (r.timeStep == 0.0) {
+      r.timeStep = sim.timeStep(), r.criticalTimeStep = sim.stability().criticalTimeStep;
+      r.outerStepRatio = sim.outerStepRatio(), r.outerEffects = sim.outerEffectNames();
+      r.outerCriticalTimeStep = sim.outerStability().criticalTimeStep;
+      r.outerLimitedBy = sim.outerStability().limitedBy;
+    }
     if (!resumingHere) {
       run->record(true);
       if (frames && stageIndex == 0) writeFrame(sim, run->scene());

@@ -53,6 +53,11 @@ struct RunSummary {
   double wallSeconds = 0.0;          // of the stepping and outputs
   double timeStep = 0.0;
   double criticalTimeStep = 0.0;
+  // Multiple time stepping: outer step / time step (1: none), the outer group, its critical step.
+  int outerStepRatio = 1;
+  std::vector<std::string> outerEffects;
+  double outerCriticalTimeStep = 0.0;
+  std::string outerLimitedBy;
   bool dissipatedTracked = false;  // the scene has an effect that dissipates (dashpots)
   bool tensile = false;            // [tensile]: strain and engineering stress (MPa)
   double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;

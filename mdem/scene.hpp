@@ -25,9 +25,18 @@ struct BondType {
   BondStiffness stiffnessFor(double restLength) const;
 };
 
+// Largest outer_step_ratio that "auto" chooses (docs/benchmarks.md, multiple time stepping).
+inline constexpr int kMaxAutoOuterRatio = 8;
+
 struct RunControl {
   double timeStep = 0.0;              // ns
   double timeStepFraction = 0.0;      // > 0: time step = this fraction of the critical one
+  // Multiple time stepping (stepper.hpp): the outer group is evaluated every outerStepRatio
+  // steps (1: every step; 0: "auto", the largest ratio with ratio h <= outerStepFraction times
+  // the outer group's own critical step, at most kMaxAutoOuterRatio).
+  int outerStepRatio = 1;
+  double outerStepFraction = 0.5;
+  std::vector<std::string> outerEffects;  // empty: every conservative effect that couples filaments
   long steps = 0;                     // maximum number of steps
   double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)
   long checkEvery = 100;              // steps between stop checks

@@ -217,10 +217,37 @@ void readBoundary(const TomlTable& root, Scene& s) {
                        "at most one [[fixed]] or [[prescribed]] entry per element");
 }
 
+// [run] outer_step_ratio / outer_step_fraction / outer_effects (multiple time stepping).
+void readOuterStep(const TomlTable& run, Scene& s) {
+  if (run.isString("outer_step_ratio")) {
+    const std::string v = run.string("outer_step_ratio");
+    if (v != "auto") run.fail("outer_step_ratio", "\"" + v + "\"", "a whole number >= 1 or \"auto\"");
+    s.run.outerStepRatio = 0;
+  } else if (run.has("outer_step_ratio")) {
+    const long r = run.integer("outer_step_ratio");
+    if (r < 1 || r > 1000) run.fail("outer_step_ratio", std::to_string(r), "a whole number in [1, 1000] or \"auto\"");
+    s.run.outerStepRatio = static_cast<int>(r);
+  }
+  if (run.has("outer_step_fraction")) {
+    if (s.run.outerStepRatio != 0)
+      run.fail("outer_step_fraction", "a fraction with a fixed outer_step_ratio",
+               "outer_step_fraction only with outer_step_ratio = \"auto\"");
+    s.run.outerStepFraction = run.positive("outer_step_fraction");
+    if (s.run.outerStepFraction > 1.0)
+      run.fail("outer_step_fraction", std::to_string(s.run.outerStepFraction), "a fraction in (0, 1]");
+  }
+  if (run.has("outer_effects")) {
+    if (!run.has("outer_step_ratio"))
+      run.fail("outer_effects", "outer effects without outer_step_ratio", "outer_step_ratio as well");
+    s.run.outerEffects = run.strings("outer_effects");
+    if (s.run.outerEffects.empty()) run.fail("outer_effects", "an empty list", "the effects of the outer step");
+  }
+}
+
 void readRunAndOutput(const TomlTable& root, Scene& s) {
   const TomlTable run = root.table("run");
   run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "stop_kinetic_energy_zJ",
-                 "check_every", "minimum_steps"});
+                 "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
     run.fail("time_step_ns", run.has("time_step_ns") ? "both time_step_ns and time_step_fraction" : "neither",
              "exactly one of time_step_ns, time_step_fraction");
@@ -230,6 +257,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
     if (s.run.timeStepFraction > 1.0)
       run.fail("time_step_fraction", std::to_string(s.run.timeStepFraction), "a fraction in (0, 1]");
   }
+  readOuterStep(run, s);
   s.run.steps = root.has("stages") && !run.has("steps") ? 0 : run.integer("steps");
   if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
   s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;

@@ -13,23 +13,57 @@
 namespace mesochain::mdem {
 
 namespace {
-std::vector<Effect*> pointers(const std::vector<EffectPtr>& effects) {
-  std::vector<Effect*> p;
-  for (const EffectPtr& e : effects) p.push_back(e.get());
-  return p;
+// Which built effects form the outer group of multiple time stepping: those named in
+// run.outer_effects, or every conservative effect that couples filaments (the van der Waals
+// contacts; dashpots stay on the inner step, Effect::dissipates).
+std::vector<char> outerGroup(const Scene& scene, const std::vector<EffectPtr>& effects) {
+  std::vector<char> outer(effects.size(), 0);
+  if (scene.run.outerStepRatio == 1) return outer;
+  const char* key = "key run.outer_effects";
+  for (const std::string& name : scene.run.outerEffects) {
+    const auto it = std::find_if(effects.begin(), effects.end(), [&](const EffectPtr& e) { return e->name() == name; });
+    if (it == effects.end())
+      throw InputError(scene.source, key, "\"" + name + "\"", "an effect the scene builds (named in effects)");
+    if ((*it)->bondList())
+      throw InputError(scene.source, key, "\"" + name + "\"", "effects other than the bonds (they set the inner step)");
+    if ((*it)->role() == EffectRole::NumericalDamping)
+      throw InputError(scene.source, key, "\"" + name + "\"",
+                       "physical effects (numerical damping acts on the net force at every step)");
+    outer[it - effects.begin()] = 1;
+  }
+  if (scene.run.outerEffects.empty())
+    for (std::size_t k = 0; k < effects.size(); ++k) outer[k] = effects[k]->couplesFilaments() && !effects[k]->dissipates() ? 1 : 0;
+  if (std::find(outer.begin(), outer.end(), 1) == outer.end())
+    throw InputError(scene.source, "key run.outer_step_ratio", "a scene without contacts",
+                     "outer_effects naming the effects of the outer step (none is a conservative contact)");
+  return outer;
+}
+
+std::string describe(const StabilityLimit& l) {
+  return fmt::format("limited by the {} (omega = {:.6g} rad/ns, damping rate {:.6g} /ns on the {} of element {})",
+                     l.limitedBy, l.omega, l.dampingRate, l.rotational ? "rotation" : "translation", l.element);
 }
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, double startTime, long startStep)
-    : state_{scene.bodies, startTime},
+    : state_{scene.bodies, startTime, {}, {}},
       kinematics_(scene.boundary, scene.bodies.size()),
       effects_(buildEffects(scene)),
-      sequence_(pointers(effects_)),
       h_(scene.run.timeStep),
-      steps_(startStep) {
-  std::vector<ContactStabilityTerms> contactTerms(scene.elementTypes.size());
-  for (const EffectPtr& e : effects_) e->addStabilityTerms(contactTerms);
-  limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, contactTerms);
+      steps_(startStep),
+      cycleStart_(startStep) {
+  const std::vector<char> outer = outerGroup(scene, effects_);
+  const bool split = std::find(outer.begin(), outer.end(), 1) != outer.end();
+  // Stability: the inner step against everything but the outer group, the outer step against
+  // the outer group alone (stability.hpp).
+  std::vector<ContactStabilityTerms> innerTerms(scene.elementTypes.size()), outerTerms(scene.elementTypes.size());
+  for (std::size_t k = 0; k < effects_.size(); ++k) {
+    effects_[k]->addStabilityTerms(outer[k] ? outerTerms : innerTerms);
+    if (outer[k]) outerNames_.push_back(effects_[k]->name());
+  }
+  limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, innerTerms);
+  if (split) outerLimit_ = criticalTimeStep(state_.bodies, {}, kinematics_, outerTerms);
+  else outerLimit_.criticalTimeStep = HUGE_VAL;
   if (scene.run.timeStepFraction > 0.0) {
     if (scene.run.timeStepFraction > 1.0)
       throw InputError(scene.source, "key run.time_step_fraction",
@@ -44,23 +78,37 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
                      "a positive time step");
   if (h_ > limit_.criticalTimeStep)
     throw InputError(scene.source, "key run.time_step_ns", fmt::format("{:.6g} ns", h_),
-                     fmt::format("at most the critical time step {:.6g} ns, limited by the {} "
-                                 "(omega = {:.6g} rad/ns, damping rate {:.6g} /ns on the {} "
-                                 "of element {}; docs/scene-file.md, time step)",
-                                 limit_.criticalTimeStep, limit_.limitedBy, limit_.omega,
-                                 limit_.dampingRate, limit_.rotational ? "rotation" : "translation",
-                                 limit_.element));
+                     fmt::format("at most the critical time step {:.6g} ns{}, {}; docs/scene-file.md, time step",
+                                 limit_.criticalTimeStep, split ? " of the inner step" : "", describe(limit_)));
+  int ratio = 1;
+  if (split) {
+    ratio = scene.run.outerStepRatio;
+    if (ratio == 0)
+      ratio = static_cast<int>(std::clamp(std::floor(scene.run.outerStepFraction * outerLimit_.criticalTimeStep / h_),
+                                          1.0, static_cast<double>(kMaxAutoOuterRatio)));
+    if (ratio * h_ > outerLimit_.criticalTimeStep)
+      throw InputError(scene.source, "key run.outer_step_ratio", fmt::format("{} (outer step {:.6g} ns)", ratio, ratio * h_),
+                       fmt::format("an outer step of at most the outer group's critical step {:.6g} ns, {}; "
+                                   "docs/scene-file.md, multiple time stepping",
+                                   outerLimit_.criticalTimeStep, describe(outerLimit_)));
+  }
+  std::vector<Effect*> pointers;
+  for (const EffectPtr& e : effects_) pointers.push_back(e.get());
+  sequence_ = EffectSequence(pointers, outer, ratio);
   kinematics_.apply(state_.bodies, startTime);
-  evaluateForces(state_, sequence_, kinematics_, true, true);
+  evaluateKickForces(state_, sequence_, kinematics_);
 }
 
-void Simulation::refreshForces() { evaluateForces(state_, sequence_, kinematics_, true, true); }
+void Simulation::refreshForces() {
+  cycleStart_ = steps_;  // the refreshed state starts an outer step
+  evaluateKickForces(state_, sequence_, kinematics_);
+}
 
 void Simulation::run(long steps) {
   if (steps <= 0) return;
   const int threads = omp_get_max_threads();
   if (partition_.threads != threads) partition_ = partitionElements(state_.bodies.size(), bonds(), sequence_, threads);
-  advance(state_, sequence_, kinematics_, h_, steps, &partition_, profile_);
+  advance(state_, sequence_, kinematics_, h_, steps, &partition_, profile_, steps_ - cycleStart_);
   steps_ += steps;
 }
 

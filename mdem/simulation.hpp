@@ -16,7 +16,9 @@ namespace mesochain::mdem {
 class Simulation {
  public:
   // Throws InputError (naming scene.source and key run.time_step_ns) when the time step is not
-  // positive or exceeds the critical time step, and for effects that are not registered.
+  // positive or exceeds the critical time step, and for effects that are not registered; with
+  // multiple time stepping (key run.outer_step_ratio) when the outer step exceeds the outer
+  // group's critical step or the outer group names an effect the scene does not build.
   // A later stage of a run starts at `startTime` (ns) and step `startStep`.
   explicit Simulation(const Scene& scene, double startTime = 0.0, long startStep = 0);
 
@@ -34,7 +36,13 @@ class Simulation {
   double time() const { return state_.time; }
   double timeStep() const { return h_; }
   long stepCount() const { return steps_; }
+  // The inner step's limit (every effect not in the outer group, bonds included).
   const StabilityLimit& stability() const { return limit_; }
+  // Multiple time stepping (stepper.hpp): outer step / inner step (1: none), the outer group's
+  // effects and their own critical step (contacts only; criticalTimeStep infinite when none).
+  int outerStepRatio() const { return sequence_.ratio; }
+  const std::vector<std::string>& outerEffectNames() const { return outerNames_; }
+  const StabilityLimit& outerStability() const { return outerLimit_; }
   std::vector<std::string> effectNames() const;
   // The built effect of that name, or nullptr.
   Effect* effect(const std::string& name) const;
@@ -58,6 +66,8 @@ class Simulation {
 
   // Restart (checkpoint.hpp): the step count and every effect's evolving state.
   void setStepCount(long steps) { steps_ = steps; }
+  long cycleStart() const { return cycleStart_; }
+  void setCycleStart(long step) { cycleStart_ = step; }
   // Recomputes the forces of the current state (after the state was replaced, e.g. by a
   // checkpoint), without touching the effects' evolving state beyond what a force evaluation
   // does.
@@ -69,9 +79,11 @@ class Simulation {
   std::vector<EffectPtr> effects_;
   EffectSequence sequence_;
   ThreadPartition partition_;  // for the current number of OpenMP threads
-  StabilityLimit limit_;
+  StabilityLimit limit_, outerLimit_;
+  std::vector<std::string> outerNames_;
   double h_ = 0.0;
   long steps_ = 0;
+  long cycleStart_ = 0;  // a boundary state's step (multiple time stepping)
   PhaseTimes* profile_ = nullptr;
 };
 

@@ -31,25 +31,52 @@ inline void closeStep(Bodies& s, int i, double t, const KinematicMap& km, double
   km.applyElement(s, i, t);
 }
 
-// Forces of elements [lo, hi) at time t: every effect's gather in order, constrained components
-// cleared. Then close the step and, unless it is the last, open the next one.
-inline void finishBlock(State& state, const EffectSequence& fx, const KinematicMap& km, int lo, int hi,
-                        double t, double h, bool last, double* gatherSeconds = nullptr) {
+// Kick forces of elements [lo, hi) at time t under `plan`: every gather in order, the outer
+// group into the hold (boundary plans only) and `ratio` times into the force; numerical damping
+// sees the held outer force (stepper.hpp); constrained components cleared.
+// `gatherSeconds` (may be null): per entry of EffectSequence::all.
+inline void gatherBlock(State& state, const EffectSequence& fx, const StepPlan& plan, const KinematicMap& km,
+                        int lo, int hi, double t, double* gatherSeconds) {
   Bodies& s = state.bodies;
   Vec3* force = s.force.data();
   Vec3* torque = s.torque.data();
   for (int i = lo; i < hi; ++i) force[i] = Vec3::Zero(), torque[i] = Vec3::Zero();
-  if (gatherSeconds) {
-    for (std::size_t k = 0; k < fx.all.size(); ++k) {
-      const double t0 = omp_get_wtime();
-      fx.all[k]->gather(state, t, lo, hi, force, torque);
-      gatherSeconds[k] += omp_get_wtime() - t0;
+  const bool split = fx.ratio > 1;
+  Vec3* heldF = split ? state.heldForce.data() : nullptr;
+  Vec3* heldT = split ? state.heldTorque.data() : nullptr;
+  if (plan.anyHeld)
+    for (int i = lo; i < hi; ++i) heldF[i] = Vec3::Zero(), heldT[i] = Vec3::Zero();
+  bool heldAdded = false;
+  for (std::size_t k = 0; k < plan.gathers.size(); ++k) {
+    const Effect* e = plan.gathers[k];
+    const double t0 = gatherSeconds ? omp_get_wtime() : 0.0;
+    if (plan.held[k]) {
+      e->gather(state, t, lo, hi, heldF, heldT);
+    } else {
+      if (split && !heldAdded && e->role() == EffectRole::NumericalDamping) {
+        for (int i = lo; i < hi; ++i) force[i] += heldF[i], torque[i] += heldT[i];
+        heldAdded = true;
+      }
+      e->gather(state, t, lo, hi, force, torque);
     }
-  } else {
-    for (const Effect* e : fx.all) e->gather(state, t, lo, hi, force, torque);
+    if (gatherSeconds) gatherSeconds[plan.gatherSlot[k]] += omp_get_wtime() - t0;
   }
+  if (split) {
+    // The outer impulse: ratio F_o at a boundary, nothing in between (less what damping saw).
+    const double w = (plan.anyHeld ? fx.ratio : 0) - (heldAdded ? 1 : 0);
+    if (w != 0.0)
+      for (int i = lo; i < hi; ++i) force[i] += w * heldF[i], torque[i] += w * heldT[i];
+  }
+  for (int i = lo; i < hi; ++i) km.clearElement(i, force[i], torque[i]);
+}
+
+// Forces of elements [lo, hi) at time t; then close the step and, unless it is the last, open
+// the next one.
+inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& plan, const KinematicMap& km, int lo,
+                        int hi, double t, double h, bool last, double* gatherSeconds = nullptr) {
+  gatherBlock(state, fx, plan, km, lo, hi, t, gatherSeconds);
+  Bodies& s = state.bodies;
   for (int i = lo; i < hi; ++i) {
-    km.clearElement(i, force[i], torque[i]);
     closeStep(s, i, t, km, h);
     if (!last) openStep(s, i, t, km, h);
   }
@@ -60,49 +87,79 @@ inline void finishBlock(State& state, const EffectSequence& fx, const KinematicM
 // elements the gathers and the kicks.
 // `profile` (may be null): seconds of the first thread, per effect's items, per effect's
 // gather, then the rest of the block loop (integrate).
-void forcesAndKicks(State& state, const EffectSequence& fx, const KinematicMap& km, double t, double h, bool last,
-                    std::vector<double>* profile) {
+void forcesAndKicks(State& state, const EffectSequence& fx, const StepPlan& plan, const KinematicMap& km, double t,
+                    double h, bool last, std::vector<double>* profile) {
   const int n = state.bodies.size(), blocks = (n + kBlock - 1) / kBlock;
   const bool timing = profile && omp_get_thread_num() == 0;
   double mark = timing ? omp_get_wtime() : 0.0;
-  for (std::size_t k = 0; k < fx.withItems.size(); ++k) {
-    Effect* e = fx.withItems[k];
+  for (std::size_t k = 0; k < plan.withItems.size(); ++k) {
+    Effect* e = plan.withItems[k];
     const int items = e->itemCount();
     const int chunks = (items + kItemChunk - 1) / kItemChunk;
 #pragma omp for schedule(static) nowait
     for (int c = 0; c < chunks; ++c) e->computeItems(state, t, c * kItemChunk, std::min(items, (c + 1) * kItemChunk));
     if (timing) {
       const double now = omp_get_wtime();
-      (*profile)[k] += now - mark, mark = now;
+      (*profile)[plan.itemSlot[k]] += now - mark, mark = now;
     }
   }
 #pragma omp barrier
   if (timing) {
     const double now = omp_get_wtime();
-    if (!fx.withItems.empty()) (*profile)[fx.withItems.size() - 1] += now - mark;  // the wait
+    if (!plan.withItems.empty()) (*profile)[plan.itemSlot.back()] += now - mark;  // the wait
     mark = now;
   }
   double* gathers = timing ? profile->data() + fx.withItems.size() : nullptr;
 #pragma omp for schedule(static)
-  for (int b = 0; b < blocks; ++b) finishBlock(state, fx, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last, gathers);
+  for (int b = 0; b < blocks; ++b)
+    finishBlock(state, fx, plan, km, b * kBlock, std::min(n, (b + 1) * kBlock), t, h, last, gathers);
   if (timing) profile->back() += omp_get_wtime() - mark;  // block loop incl. gathers (collect subtracts them)
+}
+
+StepPlan makePlan(const EffectSequence& fx, bool boundary) {
+  StepPlan p;
+  const bool split = fx.ratio > 1;
+  for (std::size_t k = 0; k < fx.all.size(); ++k) {
+    Effect* e = fx.all[k];
+    const bool outer = split && fx.outer[k];
+    if (outer && !boundary) continue;
+    p.gathers.push_back(e);
+    p.held.push_back(outer ? 1 : 0);
+    p.gatherSlot.push_back(static_cast<int>(k));
+    p.anyHeld = p.anyHeld || outer;
+    if (e->hasPrepare()) p.withPrepare.push_back(e);
+    if (e->hasFinish()) p.withFinish.push_back(e);
+  }
+  for (std::size_t k = 0; k < fx.withItems.size(); ++k) {
+    Effect* e = fx.withItems[k];
+    const auto at = std::find(fx.all.begin(), fx.all.end(), e) - fx.all.begin();
+    if (split && fx.outer[at] && !boundary) continue;
+    p.withItems.push_back(e);
+    p.itemSlot.push_back(static_cast<int>(k));
+  }
+  return p;
 }
 
 }  // namespace
 
-EffectSequence::EffectSequence(const std::vector<Effect*>& effects) : all(effects) {
+EffectSequence::EffectSequence(const std::vector<Effect*>& effects, std::vector<char> outerGroup, int outerRatio)
+    : all(effects), outer(std::move(outerGroup)), ratio(std::max(1, outerRatio)) {
+  outer.resize(all.size(), 0);
   for (Effect* e : all) {
     if (e->itemCount() > 0 || e->hasPrepare()) withItems.push_back(e);
     if (e->hasPrepare()) withPrepare.push_back(e);
     if (e->hasFinish()) withFinish.push_back(e);
     couplesFilaments = couplesFilaments || e->couplesFilaments();
   }
+  if (std::find(outer.begin(), outer.end(), 1) == outer.end()) ratio = 1;
+  boundary = makePlan(*this, true);
+  inner = makePlan(*this, false);
 }
 
 ThreadPartition partitionElements(int n, const std::vector<Bond>& bonds, const EffectSequence& fx, int threads) {
   ThreadPartition p;
   p.threads = std::max(1, threads);
-  if (fx.couplesFilaments || !fx.withPrepare.empty() || !fx.withFinish.empty()) return p;
+  if (fx.couplesFilaments || fx.ratio > 1 || !fx.withPrepare.empty() || !fx.withFinish.empty()) return p;
   // reach[c]: the largest element index bonded to an element below c; cut c is valid when
   // reach[c] < c (nothing below c is bonded to c or above).
   std::vector<int> reach(n + 1, -1);
@@ -168,13 +225,13 @@ void collect(const EffectSequence& fx, const std::vector<double>& slots, PhaseTi
 }  // namespace
 
 void advance(State& state, const EffectSequence& fx, const KinematicMap& km, double h, long steps,
-             const ThreadPartition* partition, PhaseTimes* profile) {
+             const ThreadPartition* partition, PhaseTimes* profile, long cycleStep) {
   if (steps <= 0) return;
   std::vector<double> slots = profile ? profileSlots(fx) : std::vector<double>{};
   Bodies& s = state.bodies;
   const int n = s.size();
   const double t0 = state.time;
-  if (partition && partition->independent && partition->threads > 1 && n > kParallelThreshold) {
+  if (partition && partition->independent && partition->threads > 1 && n > kParallelThreshold && fx.ratio == 1) {
     const ThreadPartition& p = *partition;
     const double start = omp_get_wtime();
 #pragma omp parallel num_threads(p.threads)
@@ -192,7 +249,7 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
                                              start[part + 1] - start[part]);
           }
           const bool last = k + 1 == steps;
-          for (int b = lo; b < hi; b += kBlock) finishBlock(state, fx, km, b, std::min(hi, b + kBlock), t, h, last);
+          for (int b = lo; b < hi; b += kBlock) finishBlock(state, fx, fx.boundary, km, b, std::min(hi, b + kBlock), t, h, last);
         }
       }
     }
@@ -200,42 +257,38 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
     if (profile) (*profile)["independent parts (items, gathers, integrate)"] += omp_get_wtime() - start;
     return;
   }
-  if (!fx.withPrepare.empty() || !fx.withFinish.empty()) {
-    // Effects with serial phases (neighbour lists, dissipated work): those run between parallel
-    // regions, one region per step, so that their own parallel loops (the neighbour list's
-    // displacement check and rebuild) use every thread instead of one inside a `single`.
+  // The plan of step k (0-based here): that of the state it ends in.
+  auto planOf = [&](long k) -> const StepPlan& { return fx.isBoundary(cycleStep + k + 1) ? fx.boundary : fx.inner; };
+  // Steps run in parallel regions; an effect's serial phases (prepare: e.g. a neighbour list;
+  // finish: dissipated work) run between regions, so that their own parallel loops use every
+  // thread. A region spans as many steps as need no serial phase in between (all of them
+  // without such effects; with multiple time stepping the inner steps between boundaries).
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (int i = 0; i < n; ++i) openStep(s, i, t0, km, h);
-    double t = t0;
-    for (long k = 0; k < steps; ++k) {
-      t += h;
-      for (Effect* e : fx.withPrepare) {
-        const double t1 = omp_get_wtime();
-        e->prepare(state, t);
-        if (profile) (*profile)["prepare " + e->name()] += omp_get_wtime() - t1;
-      }
-      const bool last = k + 1 == steps;
+  for (int i = 0; i < n; ++i) openStep(s, i, t0, km, h);
+  double t = t0;
+  for (long k = 0; k < steps;) {
+    for (Effect* e : planOf(k).withPrepare) {
+      const double t1 = omp_get_wtime();
+      e->prepare(state, t + h);
+      if (profile) (*profile)["prepare " + e->name()] += omp_get_wtime() - t1;
+    }
+    long end = k + 1;
+    while (end < steps && planOf(end - 1).withFinish.empty() && planOf(end).withPrepare.empty()) ++end;
 #pragma omp parallel if (n > kParallelThreshold)
-      forcesAndKicks(state, fx, km, t, h, last, profile ? &slots : nullptr);
-      for (Effect* e : fx.withFinish) {
-        const double t1 = omp_get_wtime();
-        e->finish(state, t);
-        if (profile) (*profile)["finish " + e->name()] += omp_get_wtime() - t1;
+    {
+      double tk = t;  // every thread follows the same time sequence
+      for (long j = k; j < end; ++j) {
+        tk += h;
+        forcesAndKicks(state, fx, planOf(j), km, tk, h, j + 1 == steps, profile ? &slots : nullptr);
       }
     }
-    for (long k = 0; k < steps; ++k) state.time += h;
-    collect(fx, slots, profile);
-    return;
-  }
-#pragma omp parallel if (n > kParallelThreshold)
-  {
-    double t = t0;  // every thread follows the same time sequence
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) openStep(s, i, t, km, h);
-    for (long k = 0; k < steps; ++k) {
-      t += h;
-      forcesAndKicks(state, fx, km, t, h, k + 1 == steps, profile ? &slots : nullptr);
+    for (long j = k; j < end; ++j) t += h;
+    for (Effect* e : planOf(end - 1).withFinish) {
+      const double t1 = omp_get_wtime();
+      e->finish(state, t);
+      if (profile) (*profile)["finish " + e->name()] += omp_get_wtime() - t1;
     }
+    k = end;
   }
   for (long k = 0; k < steps; ++k) state.time += h;
   collect(fx, slots, profile);
@@ -254,6 +307,19 @@ void evaluateForces(State& state, const EffectSequence& fx, const KinematicMap& 
     if (e->hasFinish()) e->finish(state, state.time);
   }
   if (clearConstrained) km.clearConstrainedForces(s);
+}
+
+void evaluateKickForces(State& state, const EffectSequence& fx, const KinematicMap& km) {
+  Bodies& s = state.bodies;
+  if (fx.ratio > 1) {
+    state.heldForce.assign(s.size(), Vec3::Zero());
+    state.heldTorque.assign(s.size(), Vec3::Zero());
+  }
+  const StepPlan& plan = fx.boundary;
+  for (Effect* e : plan.withPrepare) e->prepare(state, state.time);
+  for (Effect* e : plan.withItems) e->computeItems(state, state.time, 0, e->itemCount());
+  gatherBlock(state, fx, plan, km, 0, s.size(), state.time, nullptr);
+  for (Effect* e : plan.withFinish) e->finish(state, state.time);
 }
 
 }  // namespace mesochain::mdem

@@ -38,6 +38,7 @@ void TomlTable::allowOnly(std::initializer_list<const char*> allowed) const {
 }
 
 bool TomlTable::has(const std::string& key) const { return value_->contains(key); }
+bool TomlTable::isString(const std::string& key) const { return has(key) && value_->at(key).is_string(); }
 
 const toml::value& TomlTable::at(const std::string& key) const {
   if (!has(key)) fail(key, "nothing", "this key (it is required)");

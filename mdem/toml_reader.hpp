@@ -23,6 +23,7 @@ class TomlTable {
   void allowOnly(std::initializer_list<const char*> allowed) const;
 
   bool has(const std::string& key) const;
+  bool isString(const std::string& key) const;  // present and a string
   // Dotted key path plus line, e.g. "key run.time_step_ns (line 12)".
   std::string where(const std::string& key) const;
   const std::string& source() const { return source_; }

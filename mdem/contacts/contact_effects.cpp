@@ -261,16 +261,28 @@ void VdwContactEffect::loadState(BinaryReader& in) {
 }
 
 ContactDampingEffect::ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> nb, bool owner)
-    : scene_(scene), spec_(scene.contacts.damping), nb_(std::move(nb)), ownsNeighbourhood_(owner) {}
+    : scene_(scene), spec_(scene.contacts.damping), nb_(std::move(nb)), ownsNeighbourhood_(owner),
+      refreshesList_(refreshesList(scene, owner)) {}
 
 double ContactDampingEffect::interactionRange(const Scene& s) {
   return 2.0 * maxRadius(s) + s.contacts.damping.cutoffGap + 2.0 * maxHalfLength(s);
 }
 
+bool ContactDampingEffect::refreshesList(const Scene& scene, bool owner) {
+  if (owner) return true;
+  // vdw_contact (first in the force order) refreshes the shared list, unless multiple time
+  // stepping puts it on the outer step and the dashpots on the inner one.
+  // (Without run.outer_effects, the outer group is vdw_contact alone: simulation.cpp.)
+  const auto& outer = scene.run.outerEffects;
+  const auto named = [&](const char* e) { return std::find(outer.begin(), outer.end(), e) != outer.end(); };
+  return scene.run.outerStepRatio != 1 && (outer.empty() || named("vdw_contact") != named("contact_damping"));
+}
+
 void ContactDampingEffect::prepare(const State& state, double) {
   // The owner of the shared list refreshes it: vdw_contact, which comes first in the force
-  // order, when the scene has it (the displacement check would otherwise run twice a step).
-  if (ownsNeighbourhood_) nb_->update(state.bodies);
+  // order, when the scene has it and runs on the same steps (the displacement check would
+  // otherwise run twice a step).
+  if (refreshesList_) nb_->update(state.bodies);
   results_.resize(nb_->list().pairs().size());
   power_.resize(results_.size());
 }

@@ -103,6 +103,7 @@ class ContactDampingEffect : public Effect {
  public:
   ContactDampingEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood, bool ownsNeighbourhood);
   std::string name() const override { return "contact_damping"; }
+  bool dissipates() const override { return true; }
   bool hasPrepare() const override { return true; }
   void prepare(const State& state, double time) override;
   int itemCount() const override { return static_cast<int>(results_.size()); }
@@ -120,6 +121,7 @@ class ContactDampingEffect : public Effect {
   static double interactionRange(const Scene& scene);
 
  private:
+  static bool refreshesList(const Scene& scene, bool owner);
   // Work: each force evaluation at time t charges its power (sum over pairs of
   // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one,
   // summed over the pairs in their order (independent of the thread count).
@@ -128,6 +130,7 @@ class ContactDampingEffect : public Effect {
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;
   bool ownsNeighbourhood_;
+  bool refreshesList_;  // refreshes the shared list in prepare (stepper.hpp)
   std::vector<ContactPairResult> results_;
   std::vector<double> power_;  // per pair
 };

@@ -280,6 +280,31 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   }
 }
 
+TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
+  // vdW contacts every 4 steps: checkpoints at multiples of 20 fall on boundary states, the stage
+  // boundary (step 90) and the kills (35, 95, 150) between them; the held outer forces and the
+  // outer cycle come back from the checkpoint.
+  std::string text = stagedScene(90, 110);
+  text.replace(text.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nouter_step_ratio = 4\n");
+  std::ofstream(scenePath_) << text;
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.outerStepRatio, 4);
+  for (long at : {35L, 95L, 150L}) {
+    const std::string out = fmt::format("at{}", at);
+    RunOptions kill;
+    kill.interruptAfter = at;
+    ASSERT_TRUE(run(out, kill).interrupted);
+    RunOptions resume;
+    resume.resume = true;
+    const RunSummary r = run(out, resume);
+    EXPECT_EQ(r.steps, reference.steps) << at;
+    EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
+    EXPECT_EQ(r.finalStress, reference.finalStress) << at;
+    for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
+      EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
+  }
+}
+
 TEST_F(Restart, StageErrorsNameTheKey) {
   auto expectError = [&](const std::string& text, const char* key) {
     std::ofstream(scenePath_) << text;
