@@ -16,11 +16,13 @@
 #include <omp.h>
 
 #include "app/bench_network_lammps.hpp"
+#include "app/bench_network_mts.hpp"
 #include "app/commands.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/units.hpp"
 
@@ -40,6 +42,8 @@ struct NetworkBenchOptions {
   int kernelPoints = 0;      // > 0: only this rule, --kernel-repeat times (callgrind)
   int kernelRepeat = 20;
   std::string kernelPath = "table";  // "table" (one lookup of D per point) or "line" (three of H)
+  std::vector<int> outerRatios;      // non-empty: the multiple-time-stepping curve and exit
+  std::string scene;                 // a scene file instead of the generated networks
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -289,12 +293,24 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--kernel-points", opt->kernelPoints,
                        "with --kernel-curve: only this many Gauss points, --kernel-repeat times (for callgrind)");
     (*sub)->add_option("--kernel-repeat", opt->kernelRepeat, "with --kernel-points: evaluations of every pair");
+    (*sub)->add_option("--outer-ratios", opt->outerRatios,
+                       "multiple time stepping: throughput and accuracy at these outer/inner step ratios, and exit")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 64));
+    (*sub)->add_option("--scene", opt->scene,
+                       "a scene file (e.g. a deposited film) instead of the generated networks: its bodies, effects "
+                       "and [run] time step")
+        ->check(CLI::ExistingFile);
     (*sub)->add_option("--kernel-path", opt->kernelPath, "with --kernel-points: table (D, one lookup) or line (H, three)")
         ->check(CLI::IsMember({"table", "line"}));
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
     if (opt->kernelCurve) return printKernelCurve(*opt);
+    if (!opt->outerRatios.empty())
+      return printOuterRatioCurve(
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene),
+          opt->outerRatios, opt->seconds, opt->threads);
     if (!opt->lammps.empty()) {
       for (int total : opt->totals) {
         const mdem::Scene s = networkScene(total, opt->tubeLength, true);
@@ -307,14 +323,18 @@ Command makeBenchNetworkCommand() {
       return 0;
     }
     std::cout << "elements  tubes  pairs     threads  element-steps/s  neighbour-search  vdw-contact (items + gather, first thread)\n";
-    for (int total : opt->totals) {
-      const mdem::Scene s = networkScene(total, opt->tubeLength, opt->isotropic);
+    std::vector<mdem::Scene> scenes;
+    if (!opt->scene.empty()) scenes.push_back(mdem::loadScene(opt->scene));
+    else
+      for (int total : opt->totals) scenes.push_back(networkScene(total, opt->tubeLength, opt->isotropic));
+    for (const mdem::Scene& s : scenes) {
+      // Tubes: elements minus bonds for chains (a filament of n elements has n - 1 bonds).
+      const int tubes = s.bodies.size() - static_cast<int>(s.bonds.size());
       for (int threads : {1, opt->threads}) {
         omp_set_num_threads(threads);
         const Measurement m = measure(s, opt->seconds, opt->steps);
         std::cout << fmt::format("{:8d}  {:5d}  {:8d}  {:7d}  {:15.4g}  {:15.1f}%  {:13.1f}%\n", s.bodies.size(),
-                                 total / opt->tubeLength, m.pairs, threads, m.rate, 100 * m.neighbourShare,
-                                 100 * m.contactShare)
+                                 tubes, m.pairs, threads, m.rate, 100 * m.neighbourShare, 100 * m.contactShare)
                   << std::flush;
       }
     }

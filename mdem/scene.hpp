@@ -35,7 +35,7 @@ struct RunControl {
   // steps (1: every step; 0: "auto", the largest ratio with ratio h <= outerStepFraction times
   // the outer group's own critical step, at most kMaxAutoOuterRatio).
   int outerStepRatio = 1;
-  double outerStepFraction = 0.5;
+  double outerStepFraction = 1.0;
   std::vector<std::string> outerEffects;  // empty: every conservative effect that couples filaments
   long steps = 0;                     // maximum number of steps
   double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)

@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "mdem/effect_registry.hpp"
 #include "mdem/integrator.hpp"
+#include "mdem/units.hpp"
 
 namespace mesochain::mdem {
 
@@ -62,8 +63,21 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
     if (outer[k]) outerNames_.push_back(effects_[k]->name());
   }
   limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, innerTerms);
-  if (split) outerLimit_ = criticalTimeStep(state_.bodies, {}, kinematics_, outerTerms);
-  else outerLimit_.criticalTimeStep = HUGE_VAL;
+  if (split) {
+    outerLimit_ = criticalTimeStep(state_.bodies, {}, kinematics_, outerTerms);
+    // Impulse multiple time stepping is unstable at outer steps near a third of the fastest
+    // inner period (nonlinear 3:1 resonance; Ma, Izaguirre & Skeel, SIAM J. Sci. Comput. 24,
+    // 1951 (2003)): H < T / 3 = 2 pi / (3 omega), with omega the inner Gershgorin bound
+    // (>= the true frequency, so the guard is conservative). Measured: docs/benchmarks.md.
+    const double resonance = 2.0 * units::kPi / (3.0 * limit_.omegaMax);
+    if (resonance < outerLimit_.criticalTimeStep) {
+      outerLimit_ = limit_;
+      outerLimit_.criticalTimeStep = resonance;
+      outerLimit_.limitedBy = "resonance with the inner step's fastest vibration (a third of its period)";
+    }
+  } else {
+    outerLimit_.criticalTimeStep = HUGE_VAL;
+  }
   if (scene.run.timeStepFraction > 0.0) {
     if (scene.run.timeStepFraction > 1.0)
       throw InputError(scene.source, "key run.time_step_fraction",

@@ -1,0 +1,17 @@
+#pragma once
+// `mesochain bench network --outer-ratios 1,2,4,8`: what multiple time stepping (the ratio of
+// the contacts' outer step to the bonds' inner step, mdem/stepper.hpp) costs and changes on a
+// network: throughput at each ratio's own time step, and, at one common inner step, the energy
+// error without damping and the trajectory's deviation from the unsplit run
+// (docs/benchmarks.md, "multiple time stepping").
+#include <vector>
+
+#include "mdem/scene.hpp"
+
+namespace mesochain::app {
+
+// `scene` names its effects and time_step_fraction; ratios that exceed the contacts' own
+// critical step are reported as refused. Returns 0.
+int printOuterRatioCurve(const mdem::Scene& scene, const std::vector<int>& ratios, double seconds, int threads);
+
+}  // namespace mesochain::app
