@@ -292,8 +292,11 @@ TEST_F(Restart, StageErrorsNameTheKey) {
   };
   const std::string good = stagedScene(10, 10);
   std::string t = good;
-  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"compression\"");
+  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"squeeze\"");
   expectError(t, "stages[1].kind");
+  t = good;
+  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"compression\"");
+  expectError(t, "stages[1].compression");  // a compression stage without its table (and with a tensile one)
   t = good;
   t.replace(t.find("name = \"pull\""), 13, "name = \"relax\"");
   expectError(t, "stages[1].name");
