@@ -39,7 +39,7 @@ PoreSizeDistribution poreSizeDistribution(const Scene& scene, const PoreSizeOpti
   out.zLow = o.zHigh > o.zLow ? o.zLow : zMin - rMax;
   out.zHigh = o.zHigh > o.zLow ? o.zHigh : zMax + rMax;
   const double lz = out.zHigh - out.zLow;
-  const double h = o.gridSpacing > 0.0 ? o.gridSpacing : std::max(0.25, std::cbrt(lx * ly * lz / o.maxPoints));
+  const double h = o.gridSpacing > 0.0 ? o.gridSpacing : std::max(0.5, std::cbrt(lx * ly * lz / o.maxPoints));
   const long n[3] = {std::max(1L, std::lround(lx / h)), std::max(1L, std::lround(ly / h)), std::max(1L, std::lround(lz / h))};
   const double len[3] = {lx, ly, lz};
   for (int k = 0; k < 3; ++k) out.spacing[k] = len[k] / n[k];

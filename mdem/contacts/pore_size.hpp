@@ -29,8 +29,8 @@ namespace mesochain::mdem {
 
 struct PoreSizeOptions {
   double shell = 0.17;          // nm, added to each radius (the porosity's van der Waals shell)
-  double gridSpacing = 0.0;     // nm; 0: the finest of at least 0.25 nm within maxPoints
-  long maxPoints = 2000000;     // grid points when gridSpacing = 0
+  double gridSpacing = 0.0;     // nm; 0: the finest of at least 0.5 nm within maxPoints
+  long maxPoints = 1000000;     // grid points when gridSpacing = 0
   double binWidth = 1.0;        // nm, in pore diameter
   // z range of the grid; zHigh <= zLow: the film's thickness (above).
   double zLow = 0.0, zHigh = 0.0;
