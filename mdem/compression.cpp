@@ -63,10 +63,9 @@ double parallelTubeCurvature(const LennardJones& lj, double radius) {
   return (slope(d + delta) - slope(d - delta)) / (2.0 * delta);
 }
 
-void setUpCompression(Scene& s, double startTime) {
+void setUpCompression(Scene& s, double startTime, const std::string& key) {
   CompressionSpec& c = s.compression;
   if (!c.enabled) return;
-  const std::string key = "key stages.compression";
   if (s.periodic.periodic[2])
     throw InputError(s.source, "key periodic.length_nm", "a film periodic along z", "no periodicity along z with plates normal to z");
   const Bodies& b = s.bodies;

@@ -43,8 +43,10 @@ double cycleDuration(const CompressionSpec& c);  // ns
 // Default stiffness (when c.stiffness == 0): the largest Phi''(d_eq) over the element types
 // present, of two parallel tubes of that kind (tube_potential.hpp). Places the plates from the
 // positions and sets c.startTime. InputError (naming the keys) when the film has periodic z,
-// bricks without wall_stiffness_pN_per_nm2, no vdW parameters for the default, or no plate area.
-void setUpCompression(Scene& scene, double startTime);
+// bricks without wall_stiffness_pN_per_nm2, no vdW parameters for the default, or no plate area;
+// `key` is the table's key in messages. The scene reader calls it once on the scene's initial
+// state to find such errors before the run.
+void setUpCompression(Scene& scene, double startTime, const std::string& key = "key stages.compression");
 // Phi''(d) at the minimum of the parallel-tube energy per length (pN/nm^2).
 double parallelTubeCurvature(const LennardJones& lj, double radius);
 

@@ -57,7 +57,8 @@ std::vector<StageSpec> stagesOf(const Scene& s) {
 
 // The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
 // extra effects and, for a tensile stage, its grips chosen from those positions.
-Scene stageScene(const Scene& base, const StageSpec& stage, const Bodies& bodies, double time, bool implicit) {
+Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, const Bodies& bodies, double time,
+                 bool implicit) {
   Scene s = base;
   s.bodies = bodies;
   s.effects.insert(s.effects.end(), stage.addEffects.begin(), stage.addEffects.end());
@@ -68,7 +69,7 @@ Scene stageScene(const Scene& base, const StageSpec& stage, const Bodies& bodies
       setUpTensile(s);
     }
     s.compression = stage.compression;
-    setUpCompression(s, time);
+    setUpCompression(s, time, fmt::format("key stages[{}].compression", index));
   }
   return s;
 }
@@ -302,7 +303,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   std::unique_ptr<StageRun> previous;
   for (; stageIndex < static_cast<std::int64_t>(stages.size()); ++stageIndex) {
     const StageSpec& spec = stages[stageIndex];
-    auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageBodies, stageTime, implicit), dir,
+    auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageIndex, stageBodies, stageTime, implicit), dir,
                                           stageIndex, stageTime, stageStep, stageBodies);
     run->setStart(stageTime, stageStep);
     Simulation& sim = run->sim();

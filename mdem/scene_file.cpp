@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/checkpoint.hpp"
+#include "mdem/compression.hpp"
 #include "mdem/contacts/contact_file.hpp"
 #include "mdem/tensile.hpp"
 #include "mdem/toml_reader.hpp"
@@ -441,6 +442,16 @@ Scene loadScene(const std::string& path) {
     setUpTensile(s);
   }
   if (root.has("stages")) readStages(root, s);
+  // A compression stage's plates on the initial state: errors (no plate area, no stiffness) now,
+  // not when the stage starts hours into the run.
+  for (std::size_t k = 0; k < s.stages.size(); ++k)
+    if (s.stages[k].compressionStage) {
+      Scene probe;
+      probe.source = s.source, probe.elementTypes = s.elementTypes, probe.bodies = s.bodies;
+      probe.periodic = s.periodic, probe.contacts = s.contacts, probe.filmSize = s.filmSize;
+      probe.compression = s.stages[k].compression;
+      setUpCompression(probe, 0.0, fmt::format("key stages[{}].compression", k));
+    }
   return s;
 }
 

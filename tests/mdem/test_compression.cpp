@@ -1,8 +1,11 @@
 // Compression stages (mdem/compression.hpp) and their plates (the "walls" effect,
 // mdem/wall_effect.hpp): the protocol's closed form; one tube pressed flat onto a plate
 // (E = k L delta^2 / 2 exactly); the default stiffness against the contact potential's own
-// curvature; energy balance with moving plates (total - initial + dissipated = plate work); a
-// relax + compression scene end to end (per-cycle rows, the film inside the plates); bad keys.
+// curvature; energy balance with moving plates (total - initial + dissipated = plate work); plate
+// errors when the scene is read. (A relax + compression scene end to end, resumed mid-cycle, and
+// the stage keys' errors: test_restart.cpp.)
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -146,6 +149,62 @@ double balanceAt(double fraction, double* workPeakOut) {
   if (!(peak > 0.0)) return 1e300;  // the plates never touched the stack
   *workPeakOut = workPeak;
   return worst;
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// The plates are checked when the scene is read, not when the stage starts: a scene without a
+// [network] film needs area_nm2, one without [vdw_contact] the stiffness.
+TEST(MdemCompression, PlateErrorsComeWhenTheSceneIsRead) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("mesochain-compression-{}", ::getpid());
+  fs::create_directories(dir);
+  const std::string path = (dir / "scene.toml").string();
+  auto scene = [&](const std::string& extra) {
+    std::ofstream(path) << "format = 1\neffects = [\"bonds\"]\n" << testing::kTubeModelToml
+                        << "[[filaments]]\nelement_type = \"cnt1010\"\nbond_type = \"cnt\"\ncount = 3\n"
+                           "[run]\ntime_step_fraction = 0.5\n"
+                           "[[stages]]\nname = \"squeeze\"\nkind = \"compression\"\nsteps = 10\n"
+                           "[stages.compression]\nmax_strain = 0.5\nstrain_rate_per_ns = 1.0\n"
+                        << extra;
+  };
+  auto expectError = [&](const char* key) {
+    try {
+      loadScene(path);
+      ADD_FAILURE() << "accepted, expected an error at " << key;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  scene("");
+  expectError("stages[0].compression.wall_stiffness_pN_per_nm2");
+  scene("wall_stiffness_pN_per_nm2 = 500.0\n");
+  expectError("stages[0].compression.area_nm2");
+  scene("wall_stiffness_pN_per_nm2 = 500.0\narea_nm2 = 20.0\n");
+  const Scene s = loadScene(path);
+  ASSERT_EQ(s.stages.size(), 1u);
+  EXPECT_TRUE(s.stages[0].compressionStage);
+  EXPECT_EQ(s.stages[0].compression.stiffness, 500.0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// The example of docs/benchmarks.md stays a valid scene: relax, six 60 % cycles, rest.
+TEST(MdemCompression, ExampleSceneLoads) {
+  const Scene s = loadScene(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/buckypaper-compression.toml");
+  ASSERT_EQ(s.stages.size(), 3u);
+  EXPECT_TRUE(s.stages[1].compressionStage);
+  EXPECT_EQ(s.stages[1].compression.cycles, 6);
+  EXPECT_EQ(s.stages[1].compression.maxStrain, 0.6);
+  EXPECT_EQ(s.bodies.size(), 2397);
 }
 
 }  // namespace
