@@ -112,6 +112,17 @@ Command makeDemCommand() {
                                  "cross-section {:.6g} nm^2, gauge length {:.6g} nm; {}\n",
                                  st.finalStrain, st.finalStress, st.peakStress, st.initialStress, st.crossSection,
                                  st.gaugeLength, st.tensileCsv);
+      if (st.compression) {
+        std::cout << fmt::format("compression: {} cycle(s) completed{}, plate gap at zero strain {:.6g} nm, plate stiffness "
+                                 "{:.6g} pN/nm^2, plate area {:.6g} nm^2, peak pressure {:.6g} MPa; {}\n",
+                                 st.cycles.size(), st.cyclesDone ? "" : " (the stage's steps ran out first)",
+                                 st.initialPlateGap, st.plateStiffness, st.plateArea, st.peakPressure, st.compressionCsv);
+        for (const mdem::CycleRecord& c : st.cycles)
+          std::cout << fmt::format("  cycle {}: thickness {:.6g} nm (smallest {:.6g} nm), density {:.6g} g/cm^3, peak pressure "
+                                   "{:.6g} MPa\n",
+                                   c.cycle, c.thickness, c.smallestThickness, c.density, c.peakPressure);
+      }
+      if (st.film) std::cout << "film at the end of stage " << st.name << " (" << st.filmJson << "):\n" << mdem::formatFilmStatistics(*st.film);
       if (st.tensile && st.elastic.samples >= 2)
         std::cout << fmt::format("elastic slope (Young's modulus of the specimen) {:.6g} MPa over strain {:.4g} - {:.4g} "
                                  "({} samples, R^2 {:.4f})\n",

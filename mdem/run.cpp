@@ -12,6 +12,8 @@
 #include "common/errors.hpp"
 #include "mdem/append_file.hpp"
 #include "mdem/checkpoint.hpp"
+#include "mdem/compression.hpp"
+#include "mdem/contacts/film_statistics.hpp"
 #include "mdem/output.hpp"
 #include "mdem/tensile.hpp"
 #include "mdem/time_series_plot.hpp"
@@ -55,7 +57,8 @@ std::vector<StageSpec> stagesOf(const Scene& s) {
 
 // The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
 // extra effects and, for a tensile stage, its grips chosen from those positions.
-Scene stageScene(const Scene& base, const StageSpec& stage, const Bodies& bodies, double time, bool implicit) {
+Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, const Bodies& bodies, double time,
+                 bool implicit) {
   Scene s = base;
   s.bodies = bodies;
   s.effects.insert(s.effects.end(), stage.addEffects.begin(), stage.addEffects.end());
@@ -65,6 +68,8 @@ Scene stageScene(const Scene& base, const StageSpec& stage, const Bodies& bodies
       s.tensile.startTime = time;
       setUpTensile(s);
     }
+    s.compression = stage.compression;
+    setUpCompression(s, time, fmt::format("key stages[{}].compression", index));
   }
   return s;
 }
@@ -116,6 +121,14 @@ class StageRun {
       tensile_ = std::make_unique<TensileRecorder>(scene_, prepare(scene_.tensile.csv), tensile);
       if (resume) tensile_->loadState(*resume);
     }
+    if (scene_.compression.enabled) {
+      std::int64_t rows = -1, cycles = -1;
+      if (resume) rows = resume->read<std::int64_t>(), cycles = resume->read<std::int64_t>();
+      const CompressionSpec& c = scene_.compression;
+      compression_ = std::make_unique<CompressionRecorder>(scene_, c.csv.empty() ? "" : prepare(c.csv),
+                                                           c.cyclesCsv.empty() ? "" : prepare(c.cyclesCsv), rows, cycles);
+      if (resume) compression_->loadState(*resume);
+    }
   }
   void saveOutputs(BinaryWriter& out) const {
     out.write<std::int64_t>(csv_ ? csv_->bytes() : -1);
@@ -123,6 +136,10 @@ class StageRun {
     out.write<char>(plot_ ? 1 : 0);
     if (plot_) plot_->saveState(out);
     if (tensile_) tensile_->saveState(out);
+    if (compression_) {
+      out.write<std::int64_t>(compression_->csvBytes()), out.write<std::int64_t>(compression_->cyclesBytes());
+      compression_->saveState(out);
+    }
   }
   void savePrelude(BinaryWriter& out) const {
     out.write(index_);
@@ -138,7 +155,7 @@ class StageRun {
   void record(bool force) {
     const long k = sim_.stepCount() - startStep_;
     const bool series = force || k % spec_.energiesEvery == 0, plotted = plot_ && (force || k % plotEvery_ == 0);
-    if (!(series && (csv_ || tensile_)) && !plotted) return;
+    if (!(series && (csv_ || tensile_ || compression_)) && !plotted) return;
     const EnergyLedger e = sim_.energies();  // once for every output of this step
     if (csv_ && series) csv_->write(sim_.stepCount(), sim_.time(), e, sim_.bodies());
     if (plotted) plot_->record(sim_.time(), e, sim_.bodies());
@@ -146,9 +163,11 @@ class StageRun {
       const TensileSample& t = tensile_->record(sim_, e);
       reachedStrain_ = scene_.tensile.finalStrain > 0.0 && t.strain >= scene_.tensile.finalStrain;
     }
+    if (compression_ && series) compression_->record(sim_, e);
   }
-  bool recordsEvery() const { return csv_ || tensile_ || plot_; }
+  bool recordsEvery() const { return csv_ || tensile_ || plot_ || compression_; }
   bool reachedFinalStrain() const { return reachedStrain_; }
+  bool cyclesDone() const { return compression_ && compression_->done(); }
   void finish(StageSummary& out) {
     if (plot_) plot_->write(prepare(spec_.plotPng));
     if (tensile_) {
@@ -160,6 +179,24 @@ class StageRun {
       out.crossSection = scene_.tensile.crossSection, out.gaugeLength = scene_.tensile.gaugeLength;
       out.elastic = fitElasticSlope(tensile_->samples(), 0.0, kElasticStrain);
       out.tensileCsv = prepare(scene_.tensile.csv);
+    }
+    if (compression_) {
+      const CompressionSpec& c = scene_.compression;
+      if (!c.png.empty()) compression_->writePlot(prepare(c.png));
+      out.compression = true, out.cycles = compression_->cycles();
+      out.plateStiffness = c.stiffness, out.initialPlateGap = c.top0 - c.bottom0, out.plateArea = c.area;
+      out.compressionCsv = c.csv.empty() ? "" : prepare(c.csv);
+      for (const CompressionSample& s : compression_->samples()) out.peakPressure = std::max(out.peakPressure, s.pressure);
+    }
+    // The film report of the state a relax or compression stage ends in (film_statistics.hpp).
+    if (!spec_.tensileStage && !base_.filmSize.isZero() && !base_.stages.empty()) {
+      Scene film = base_;
+      film.bodies = sim_.bodies();
+      FilmStatisticsOptions fo;
+      fo.excludeWithin = base_.contacts.excludeWithin;
+      out.film = filmStatistics(film, fo);
+      out.filmJson = prepare(spec_.name + "-film.json");
+      writeFilmStatisticsJson(*out.film, out.filmJson);
     }
   }
 
@@ -176,6 +213,7 @@ class StageRun {
   std::unique_ptr<EnergyCsvWriter> csv_;
   std::unique_ptr<TimeSeriesPlot> plot_;
   std::unique_ptr<TensileRecorder> tensile_;
+  std::unique_ptr<CompressionRecorder> compression_;
   long plotEvery_ = 1;
   bool reachedStrain_ = false;
 };
@@ -265,7 +303,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   std::unique_ptr<StageRun> previous;
   for (; stageIndex < static_cast<std::int64_t>(stages.size()); ++stageIndex) {
     const StageSpec& spec = stages[stageIndex];
-    auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageBodies, stageTime, implicit), dir,
+    auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageIndex, stageBodies, stageTime, implicit), dir,
                                           stageIndex, stageTime, stageStep, stageBodies);
     run->setStart(stageTime, stageStep);
     Simulation& sim = run->sim();
@@ -337,6 +375,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       }
       run->record(last || stop);
       if (run->reachedFinalStrain()) stop = true, summary.reachedFinalStrain = true;
+      if (run->cyclesDone()) stop = true, summary.cyclesDone = true;
       if (frames && (k % o.framesEvery == 0 || last || stop)) writeFrame(sim, run->scene());
       const bool due = (o.checkpointEvery > 0 && k % o.checkpointEvery == 0) ||
                        (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));

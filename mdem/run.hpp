@@ -2,9 +2,12 @@
 // Runs a loaded scene with its outputs: the loop the `mesochain dem` command drives, with
 // checkpoints and resume (checkpoint.hpp, docs/scene-file.md "Restart").
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mdem/compression.hpp"
+#include "mdem/contacts/film_statistics.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/tensile.hpp"
@@ -37,6 +40,16 @@ struct StageSummary {
   double crossSection = 0.0, gaugeLength = 0.0;  // nm^2, nm
   ElasticFit elastic;            // the slope below 3 % strain (tensile.hpp)
   std::string tensileCsv;
+  // Compression stages (compression.hpp): the cycles completed, the largest plate pressure (MPa),
+  // the plates' stiffness (pN/nm^2), their gap at zero strain (nm) and area (nm^2).
+  bool compression = false, cyclesDone = false;
+  std::vector<CycleRecord> cycles;
+  double peakPressure = 0.0, plateStiffness = 0.0, initialPlateGap = 0.0, plateArea = 0.0;
+  std::string compressionCsv;
+  // Relax and compression stages of a [network] film with [[stages]]: the film report of the
+  // final state, also written to NAME-film.json.
+  std::optional<FilmStatistics> film;
+  std::string filmJson;
 };
 
 struct RunSummary {

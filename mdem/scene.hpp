@@ -81,12 +81,32 @@ struct TensileSpec {
   double startTime = 0.0;       // ns
 };
 
+// [stages.compression]: compress-recover cycles between two rigid plates normal to z
+// (mdem/compression.hpp, "walls" effect mdem/wall_effect.hpp, docs/scene-file.md).
+struct CompressionSpec {
+  bool enabled = false;
+  int cycles = 1;
+  double maxStrain = 0.0;       // compressive engineering strain of the plate gap, (H0 - H) / H0, in (0, 1)
+  double strainRate = 0.0;      // 1/ns, of H0 (the plates close at strainRate * H0 together)
+  double plateSpeed = 0.0;      // nm/ns, each plate (given instead of strainRate: rate = 2 v / H0)
+  double holdTime = 0.0;        // ns, the plates rest at H0 after each recovery
+  double wallGap = 0.34;        // nm, rest gap between a tube wall and a plate (no force beyond)
+  double stiffness = 0.0;       // pN/nm^2 per unit tube length (0: the tube-tube contact's Phi'' at its minimum)
+  int quadraturePoints = 8;     // Gauss points along an element
+  double area = 0.0;            // nm^2, plate area for the pressure (0: the [network] film's x * y)
+  std::string csv = "compression.csv", cyclesCsv = "compression-cycles.csv", png;
+  // Filled by setUpCompression from the positions at the stage's start.
+  double startTime = 0.0;       // ns
+  double bottom0 = 0.0, top0 = 0.0;  // nm, plate planes at zero strain
+};
+
 // [[stages]]: one step of a protocol (relax, then pull); the state flows from stage to stage
 // (docs/scene-file.md, stages). Without stages a scene is one stage made of [run], [output]'s
 // time series and [tensile].
 struct StageSpec {
   std::string name;
   bool tensileStage = false;            // kind = "tensile" (grips chosen at the stage's start)
+  bool compressionStage = false;        // kind = "compression" (plates placed at the stage's start)
   long steps = 0;                       // maximum steps of the stage
   double stopKineticEnergy = -1.0;      // zJ (< 0: off)
   long checkEvery = 100;
@@ -96,6 +116,7 @@ struct StageSpec {
   long energiesEvery = 100;
   std::string plotPng;
   TensileSpec tensile;                  // tensile stages
+  CompressionSpec compression;          // compression stages
 };
 
 struct Scene {
@@ -115,6 +136,7 @@ struct Scene {
   RunControl run;
   OutputSpec output;
   TensileSpec tensile;
+  CompressionSpec compression;        // set for a compression stage only (run.cpp)
   std::vector<StageSpec> stages;      // empty: one stage from [run], [output] and [tensile]
 };
 

@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/checkpoint.hpp"
+#include "mdem/compression.hpp"
 #include "mdem/contacts/contact_file.hpp"
 #include "mdem/tensile.hpp"
 #include "mdem/toml_reader.hpp"
@@ -308,6 +309,31 @@ void readTensileTable(const TomlTable& t, TensileSpec& ts) {
   ts.finalStrain = t.has("final_strain") ? t.positive("final_strain") : 0.0;
 }
 
+void readCompressionTable(const TomlTable& t, CompressionSpec& c) {
+  t.allowOnly({"cycles", "max_strain", "strain_rate_per_ns", "plate_speed_nm_per_ns", "hold_ns", "wall_gap_nm",
+               "wall_stiffness_pN_per_nm2", "quadrature_points", "area_nm2", "csv", "cycles_csv", "plot_png"});
+  c.enabled = true;
+  c.cycles = static_cast<int>(t.integer("cycles", 1));
+  if (c.cycles < 1) t.fail("cycles", std::to_string(c.cycles), "at least 1 cycle");
+  c.maxStrain = t.positive("max_strain");
+  if (c.maxStrain >= 1.0) t.fail("max_strain", fmt::format("{}", c.maxStrain), "a compressive strain in (0, 1)");
+  if (t.has("strain_rate_per_ns") == t.has("plate_speed_nm_per_ns"))
+    t.fail("strain_rate_per_ns", t.has("strain_rate_per_ns") ? "both strain_rate_per_ns and plate_speed_nm_per_ns" : "neither",
+           "exactly one of strain_rate_per_ns, plate_speed_nm_per_ns");
+  if (t.has("strain_rate_per_ns")) c.strainRate = t.positive("strain_rate_per_ns");
+  if (t.has("plate_speed_nm_per_ns")) c.plateSpeed = t.positive("plate_speed_nm_per_ns");
+  c.holdTime = t.nonNegative("hold_ns", 0.0);
+  c.wallGap = t.has("wall_gap_nm") ? t.positive("wall_gap_nm") : c.wallGap;
+  c.stiffness = t.has("wall_stiffness_pN_per_nm2") ? t.positive("wall_stiffness_pN_per_nm2") : 0.0;
+  c.quadraturePoints = static_cast<int>(t.integer("quadrature_points", c.quadraturePoints));
+  if (c.quadraturePoints < 1 || c.quadraturePoints > 32)
+    t.fail("quadrature_points", std::to_string(c.quadraturePoints), "1 to 32 Gauss points along an element");
+  c.area = t.has("area_nm2") ? t.positive("area_nm2") : 0.0;
+  c.csv = t.string("csv", c.csv);
+  c.cyclesCsv = t.string("cycles_csv", c.cyclesCsv);
+  c.png = t.string("plot_png", "");
+}
+
 // [[stages]] (docs/scene-file.md): [run] keeps the time step; its steps and stop keys move to
 // the stages.
 void readStages(const TomlTable& root, Scene& s) {
@@ -318,17 +344,17 @@ void readStages(const TomlTable& root, Scene& s) {
     root.fail("output", "energies_csv / plot_png in [output] beside [[stages]]", "each stage's own energies_csv / plot_png");
   for (const TomlTable& t : root.tables("stages")) {
     t.allowOnly({"name", "kind", "steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps", "add_effects",
-                 "energies_csv", "energies_every", "plot_png", "tensile"});
+                 "energies_csv", "energies_every", "plot_png", "tensile", "compression"});
     StageSpec st;
     st.name = t.string("name");
     if (st.name.empty()) t.fail("name", "an empty name", "a stage name (used in file names and messages)");
     for (const StageSpec& o : s.stages)
       if (o.name == st.name) t.fail("name", "\"" + st.name + "\" given twice", "a name of its own for each stage");
     const std::string kind = t.string("kind", "relax");
-    if (kind == "compression")
-      t.fail("kind", "\"compression\" (not implemented yet)", "\"relax\" or \"tensile\"");
-    if (kind != "relax" && kind != "tensile") t.fail("kind", "\"" + kind + "\"", "\"relax\" or \"tensile\"");
+    if (kind != "relax" && kind != "tensile" && kind != "compression")
+      t.fail("kind", "\"" + kind + "\"", "\"relax\", \"tensile\" or \"compression\"");
     st.tensileStage = kind == "tensile";
+    st.compressionStage = kind == "compression";
     st.steps = t.integer("steps");
     if (st.steps < 1) t.fail("steps", std::to_string(st.steps), "at least 1 step");
     st.stopKineticEnergy = t.has("stop_kinetic_energy_zJ") ? t.positive("stop_kinetic_energy_zJ") : -1.0;
@@ -349,11 +375,20 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.energiesEvery < 1) t.fail("energies_every", std::to_string(st.energiesEvery), "at least 1");
     st.plotPng = t.string("plot_png", "");
     if (st.tensileStage != t.has("tensile"))
-      t.fail("tensile", st.tensileStage ? "a tensile stage without its [stages.tensile] table" : "a [stages.tensile] table in a relax stage",
+      t.fail("tensile", st.tensileStage ? "a tensile stage without its [stages.tensile] table" : "a [stages.tensile] table in a " + kind + " stage",
              "kind = \"tensile\" with its table, or neither");
     if (st.tensileStage) {
       st.tensile.csv = st.name + "-tensile.csv";
       readTensileTable(t.table("tensile"), st.tensile);
+    }
+    if (st.compressionStage != t.has("compression"))
+      t.fail("compression",
+             st.compressionStage ? "a compression stage without its [stages.compression] table" : "a [stages.compression] table in a " + kind + " stage",
+             "kind = \"compression\" with its table, or neither");
+    if (st.compressionStage) {
+      st.compression.csv = st.name + "-compression.csv";
+      st.compression.cyclesCsv = st.name + "-cycles.csv";
+      readCompressionTable(t.table("compression"), st.compression);
     }
     s.stages.push_back(std::move(st));
   }
@@ -435,6 +470,16 @@ Scene loadScene(const std::string& path) {
     setUpTensile(s);
   }
   if (root.has("stages")) readStages(root, s);
+  // A compression stage's plates on the initial state: errors (no plate area, no stiffness) now,
+  // not when the stage starts hours into the run.
+  for (std::size_t k = 0; k < s.stages.size(); ++k)
+    if (s.stages[k].compressionStage) {
+      Scene probe;
+      probe.source = s.source, probe.elementTypes = s.elementTypes, probe.bodies = s.bodies;
+      probe.periodic = s.periodic, probe.contacts = s.contacts, probe.filmSize = s.filmSize;
+      probe.compression = s.stages[k].compression;
+      setUpCompression(probe, 0.0, fmt::format("key stages[{}].compression", k));
+    }
   return s;
 }
 

@@ -18,6 +18,8 @@ namespace mesochain::mdem {
 namespace {
 }  // namespace
 
+std::string formatFilmLine(const FilmStatistics& f);
+
 FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o) {
   const Bodies& b = scene.bodies;
   FilmStatistics f;
@@ -64,10 +66,25 @@ FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o
   if (angle < 0.0) angle += 180.0;
   if (angle >= 180.0) angle -= 180.0;
   f.directorAngleDeg = angle;
+  if (o.poreSizes) {
+    PoreSizeOptions po = o.pores;
+    po.shell = o.vdwShell;
+    f.pores = poreSizeDistribution(scene, po), f.hasPores = true;
+  }
   return f;
 }
 
 std::string formatFilmStatistics(const FilmStatistics& f) {
+  std::string pores;
+  if (f.hasPores)
+    pores = fmt::format("pores (largest empty sphere centred at each void point, grid {:.3g} nm): void fraction {:.4g}, "
+                        "diameter mean {:.4g} nm, median {:.4g} nm, largest {:.4g} nm\n",
+                        f.pores.spacing[0], f.pores.voidFraction, f.pores.meanDiameter, f.pores.medianDiameter,
+                        f.pores.largestDiameter);
+  return formatFilmLine(f) + pores;
+}
+
+std::string formatFilmLine(const FilmStatistics& f) {
   return fmt::format(
       "film: {} elements in {} filaments over {:.6g} nm^2; thickness {:.4g} nm (centre span + 2R; uniform slab {:.4g} nm), "
       "areal density {:.4g} ug/cm^2, density {:.4g} g/cm^3, porosity {:.4g} (vdW radius R + {:.3g} nm); "
@@ -99,6 +116,26 @@ void writeFilmStatisticsJson(const FilmStatistics& f, const std::string& path) {
   j["orientation_eigenvalues"] = {f.lambda1, f.lambda2};
   j["order_parameter"] = f.orderParameter;
   j["director_angle_deg"] = f.directorAngleDeg;
+  if (f.hasPores) {
+    const PoreSizeDistribution& p = f.pores;
+    nlohmann::ordered_json q;
+    q["definition"] =
+        "local pore diameter D(p) = 2 min_i(|p - axis segment_i| - R_i - vdw_shell_nm): the largest empty sphere centred at a "
+        "void point p (a pointwise lower bound of the Bhattacharya-Gubbins pore size, Langmuir 22, 7726 (2006)), over a "
+        "cell-centred grid of the film's area and z_low_nm..z_high_nm, each void point the same volume";
+    q["grid_spacing_nm"] = {p.spacing[0], p.spacing[1], p.spacing[2]};
+    q["z_low_nm"] = p.zLow, q["z_high_nm"] = p.zHigh;
+    q["grid_points"] = p.points, q["void_points"] = p.voidPoints;
+    q["void_fraction"] = p.voidFraction;
+    q["mean_diameter_nm"] = p.meanDiameter, q["median_diameter_nm"] = p.medianDiameter;
+    q["largest_diameter_nm"] = p.largestDiameter;
+    q["bin_width_nm"] = p.binWidth;
+    q["bin_lower_edge_nm"] = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < p.fraction.size(); ++k) q["bin_lower_edge_nm"].push_back(k * p.binWidth);
+    q["void_fraction_in_bin"] = p.fraction;
+    q["void_fraction_at_least_lower_edge"] = p.cumulative;
+    j["pore_size_distribution"] = q;
+  }
   const std::filesystem::path target(path), tmp = target.string() + ".tmp";
   {
     std::ofstream out(tmp);

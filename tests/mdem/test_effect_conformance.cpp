@@ -5,7 +5,8 @@
 //    gradient of the energy it reports (translations, and small world rotations with the
 //    accumulated rotation advanced alike);
 //  * an internal effect (not loads, not numerical damping): total force zero and total moment
-//    about the origin zero (linear and angular momentum conserved);
+//    about the origin zero (linear and angular momentum conserved); the plates ("walls", rigid
+//    and frictionless, normal to z): no in-plane force and no moment about z;
 //  * a dissipative effect (dashpots, numerical damping): its power on the current velocities is
 //    never positive;
 //  * every case: a short run of its scene conserves total + dissipated energy when no numerical
@@ -20,6 +21,7 @@
 
 #include "chain_fixture.hpp"
 #include "contact_fixture.hpp"
+#include "mdem/compression.hpp"
 #include "mdem/effect_registry.hpp"
 #include "mdem/simulation.hpp"
 
@@ -100,6 +102,18 @@ std::vector<ConformanceCase> cases() {
                  l.element = 3, l.force = {0.5, -0.2, 0.3}, l.moment = {0.1, 0.2, -0.3};
                  s.boundary.loads.push_back(l);
                  shake(s, 5, 0.03, 0.03, 1.0);
+                 return s;
+               }});
+  c.push_back({"walls", "crossed tubes between plates", [] {
+                 // Plates at rest (the protocol starts later), placed 0.12 nm into the lowest and
+                 // highest walls so that tilted elements touch them along part of their length.
+                 Scene s = crossedTubes({"bonds", "vdw_contact"});
+                 shake(s, 8, 0.02, 0.05, 0.5);
+                 s.compression.enabled = true;
+                 s.compression.maxStrain = 0.5, s.compression.strainRate = 1.0, s.compression.stiffness = 800.0;
+                 s.compression.area = 100.0;
+                 setUpCompression(s, 1e6);
+                 s.compression.bottom0 += s.compression.wallGap + 0.12, s.compression.top0 -= s.compression.wallGap + 0.12;
                  return s;
                }});
   c.push_back({"local_damping", "brick chain", [] {
@@ -197,7 +211,18 @@ TEST_P(EffectConformance, PassesTheSharedChecks) {
         EXPECT_NEAR(analytic, fd, 1e-5 * scale) << c.effect << " (" << c.label << "), element " << i << ", dof " << d;
       }
   }
-  if (c.effect != "loads" && e->role() == EffectRole::Physical) {
+  if (c.effect == "walls") {
+    Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+    double moment = 0.0;
+    for (int i = 0; i < b.size(); ++i) {
+      f += force[i];
+      m += b.position[i].cross(force[i]) + torque[i];
+      moment = std::max(moment, b.position[i].norm() * force[i].norm() + torque[i].norm());
+    }
+    EXPECT_GT(std::abs(f.z()), 0.0) << "the plates push";
+    EXPECT_LT(std::hypot(f.x(), f.y()), 1e-12 * scale) << "walls: in-plane force";
+    EXPECT_LT(std::abs(m.z()), 1e-12 * moment) << "walls: moment about z";
+  } else if (c.effect != "loads" && e->role() == EffectRole::Physical) {
     Vec3 f = Vec3::Zero(), m = Vec3::Zero();
     double moment = 0.0;
     for (int i = 0; i < b.size(); ++i) {

@@ -317,8 +317,11 @@ TEST_F(Restart, StageErrorsNameTheKey) {
   };
   const std::string good = stagedScene(10, 10);
   std::string t = good;
-  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"compression\"");
+  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"squeeze\"");
   expectError(t, "stages[1].kind");
+  t = good;
+  t.replace(t.find("kind = \"tensile\""), 16, "kind = \"compression\"");
+  expectError(t, "stages[1].tensile");  // a tensile table in a compression stage
   t = good;
   t.replace(t.find("name = \"pull\""), 13, "name = \"relax\"");
   expectError(t, "stages[1].name");
@@ -362,6 +365,114 @@ TEST_F(Restart, ProfileNamesEveryEffectsPhases) {
   EXPECT_LE(sum, 1.01 * r.wallSeconds) << phases;
   // Without --profile nothing is timed.
   EXPECT_TRUE(run("plain").profile.seconds.empty());
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// Relax, then two fast compress-recover cycles (plates, compression.hpp) in one scene.
+std::string compressionScene() {
+  std::string text = stagedScene(60, 0);
+  text = text.substr(0, text.find("[[stages]]\nname = \"pull\""));
+  text += R"([[stages]]
+name = "squeeze"
+kind = "compression"
+steps = 400
+energies_every = 10
+[stages.compression]
+cycles = 2
+max_strain = 0.5
+strain_rate_per_ns = 400.0
+hold_ns = 0.0002
+plot_png = "squeeze.png"
+)";
+  return text;
+}
+
+TEST_F(Restart, CompressionResumesBitForBitMidCycle) {
+  std::ofstream(scenePath_) << compressionScene();
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  const StageSummary& squeeze = reference.stages[1];
+  EXPECT_TRUE(squeeze.compression);
+  EXPECT_TRUE(squeeze.cyclesDone);
+  ASSERT_EQ(squeeze.cycles.size(), 2u);
+  EXPECT_LT(squeeze.steps, 400);  // ended by the protocol, not by the step count
+  EXPECT_GT(squeeze.peakPressure, 0.0);
+  // The plates reach 50 % and squeeze the film: at the sample of the largest strain its thickness
+  // (centre span + 2R) is well below the initial one (the plates are fast here, 400/ns, so the
+  // film does not follow them closely; a slow compression is in docs/scene-file.md).
+  {
+    std::ifstream csv(dir_ / "reference" / "squeeze-compression.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line.rfind("time_ns,cycle,phase,strain,plate_gap_nm,film_thickness_nm,", 0), 0u) << line;
+    double largestStrain = 0.0, thicknessThen = 0.0, initial = 0.0;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+      std::vector<double> f;
+      for (std::size_t a = 0, b; a <= line.size(); a = b + 1) {
+        b = line.find(',', a);
+        if (b == std::string::npos) b = line.size();
+        const std::string field = line.substr(a, b - a);
+        f.push_back(f.size() == 2 ? 0.0 : std::stod(field));  // (the phase)
+      }
+      ASSERT_GE(f.size(), 6u);
+      if (rows++ == 0) initial = f[5];
+      if (f[3] > largestStrain) largestStrain = f[3], thicknessThen = f[5];
+    }
+    EXPECT_GT(rows, 10);
+    EXPECT_GT(largestStrain, 0.4);
+    EXPECT_LT(thicknessThen, 0.75 * initial);
+  }
+  // Interrupted in the first cycle's closing, its opening and the second cycle (the relax and
+  // the stage boundary: StagesResumeBitForBitAcrossTheStageBoundary).
+  for (long at : {75L, 130L, 175L}) {
+    const std::string out = fmt::format("at{}", at);
+    RunOptions kill;
+    kill.interruptAfter = at;
+    ASSERT_TRUE(run(out, kill).interrupted);
+    RunOptions resume;
+    resume.resume = true;
+    const RunSummary r = run(out, resume);
+    EXPECT_EQ(r.steps, reference.steps) << at;
+    EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
+    ASSERT_EQ(r.stages.back().cycles.size(), 2u) << at;
+    EXPECT_EQ(r.stages.back().cycles[1].density, squeeze.cycles[1].density) << at;
+    for (const char* f : {"relax-energies.csv", "squeeze-energies.csv", "squeeze-compression.csv", "squeeze-cycles.csv",
+                          "trajectory.xyz"})
+      EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
+  }
+}
+
+TEST_F(Restart, CompressionErrorsNameTheKey) {
+  auto expectError = [&](const std::string& text, const char* key) {
+    std::ofstream(scenePath_) << text;
+    try {
+      loadScene(scenePath_);
+      ADD_FAILURE() << "accepted, expected an error at " << key;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  const std::string good = compressionScene();
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expectError(with("max_strain = 0.5", "max_strain = 1.2"), "stages[1].compression.max_strain");
+  expectError(with("strain_rate_per_ns = 400.0", "strain_rate_per_ns = 400.0\nplate_speed_nm_per_ns = 3.0"),
+              "stages[1].compression.strain_rate_per_ns");
+  expectError(with("strain_rate_per_ns = 400.0", ""), "stages[1].compression.strain_rate_per_ns");
+  expectError(with("cycles = 2", "cycles = 0"), "stages[1].compression.cycles");
+  expectError(with("cycles = 2", "cycles = 2\nspeed = 1"), "speed");
+  expectError(with("[stages.compression]", "[stages.tensile]"), "stages[1]");
+  // A compression stage's table on a relax stage.
+  expectError(with("kind = \"compression\"", "kind = \"relax\""), "stages[1].compression");
 }
 
 }  // namespace
