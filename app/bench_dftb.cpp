@@ -22,6 +22,8 @@
 
 #include "app/bench_dftb_lapack.hpp"
 #include "app/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/csv.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
@@ -182,6 +184,9 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
   const double bond = 1.42 * units::kAngstromInBohr;
   std::ofstream out;
   if (!csv.empty()) {
+    // Checked before the (minutes of) computation.
+    requireWritableOutput(csv, "<command line>", "option --csv");
+    if (!png.empty()) requireWritableOutput(png, "<command line>", "option --png");
     out.open(csv);
     out << "tube,kelvin,kappa_points,seconds,free_energy_per_atom_hartree,abs_error_hartree\n";
     if (png.empty()) png = std::filesystem::path(csv).replace_extension(".png").string();
@@ -202,7 +207,8 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
         const double s = std::chrono::duration<double>(Clock::now() - a).count();
         std::cout << fmt::format("{:<8} {:>7.0f} {:>8} {:>12.5f} {:>22.12f} {:>12.3e}\n", tube,
                                  kelvin, nk, s, f, std::abs(f - ref));
-        if (out) out << fmt::format("{},{},{},{},{:.15g},{:.6e}\n", tube, kelvin, nk, s, f, std::abs(f - ref));
+        if (out.is_open())
+          out << csvField(tube) << fmt::format(",{},{},{},{:.15g},{:.6e}\n", kelvin, nk, s, f, std::abs(f - ref));
         curve.kappa.push_back(nk);
         curve.seconds.push_back(s);
         curve.error.push_back(std::abs(f - ref));

@@ -30,6 +30,8 @@
 #include "app/bench_knobs.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
+#include "common/csv.hpp"
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
 #include "common/plot/figure.hpp"
 #include "common/progress_bar.hpp"
@@ -200,12 +202,6 @@ Row relaxationRow(const std::string& path, const beam::ScanCurve& curve, const K
   return r;
 }
 
-std::string csvField(const std::string& s) {
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
-
 void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vector<Row>& rows,
                   const json& header) {
   if (!o.csv.empty()) {
@@ -216,7 +212,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
            "max_force_hartree_per_bohr,note\n";
     for (const Row& r : rows)
       out << fmt::format("{},{},{},{},{:.12g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{},{:.4g},{}\n",
-                         r.knob, csvField(r.setting), r.own, r.reference, r.constant,
+                         csvField(r.knob), csvField(r.setting), r.own, r.reference, r.constant,
                          r.uncertainty, r.relative, r.cpuPerEvaluation, r.wallPerEvaluation,
                          r.totalWall, r.evaluations, r.maxForce, csvField(r.note));
     std::cerr << "wrote " << o.csv << "\n";
@@ -235,6 +231,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
                            {"total_wall_s", num(r.totalWall)}, {"evaluations", r.evaluations},
                            {"max_force_hartree_per_bohr", num(r.maxForce)},
                            {"note", r.note}});
+    j["program"] = buildInfoJson();
     std::ofstream out(o.json);
     if (!out) throw InputError(o.json, "cannot open the JSON output for writing");
     out << j.dump(2) << "\n";

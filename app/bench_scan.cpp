@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/nanotube_builder.hpp"
@@ -89,7 +90,7 @@ int benchScan(const std::string& table, const std::string& csv) {
     if (!f) throw InputError(csv, "cannot open the CSV output for writing");
     f << "tube,kind,kpoints,force_tolerance_hartree_per_bohr,stiffness_hartree,time_s,evaluations\n";
     for (const Row& r : rows)
-      f << fmt::format("\"{}\",{},{},{:.0e},{:.12g},{:.4f},{}\n", r.tube, r.kind, r.kpoints,
+      f << csvField(r.tube) << "," << csvField(r.kind) << fmt::format(",{},{:.0e},{:.12g},{:.4f},{}\n", r.kpoints,
                        r.tolerance, r.stiffness, r.seconds, r.evaluations);
   }
   return 0;

@@ -20,6 +20,7 @@
 #include "beam/mdem_export.hpp"
 #include "beam/plate_run.hpp"
 #include "beam/si_units.hpp"
+#include "common/build_info.hpp"
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
@@ -79,6 +80,7 @@ int runPlateCommand(const PlateOptions& o) {
   const std::string png = (dir / "plate.png").string();
   plot::writePng(png, beam::renderPlatePlot(run));
   run.report["files"] = {{"plot", png}, {"fit_plots", fits}};
+  run.report["program"] = buildInfoJson();
   writeFile(dir / "plate.json", run.report.dump(2) + "\n");
   std::cout << fmt::format("D1 = {:.6g} eV ({})\n", run.singleLayer * units::kHartreeInEv,
                            run.report["inputs"]["single_layer_rigidity_source"].get<std::string>());
@@ -154,7 +156,12 @@ Command makeBeamCommand() {
     std::vector<std::string> skipped;
     for (const std::string& p : opt->inputs) {
       if (fs::is_directory(p)) {
-        for (const std::string& f : beam::scanFilesIn(p)) {
+        const std::vector<std::string> files = beam::scanFilesIn(p);
+        for (const std::string& f : files) {
+          // scan writes each curve as JSON and CSV (the same numbers): the JSON is read.
+          if (fs::path(f).extension() == ".csv" &&
+              std::find(files.begin(), files.end(), fs::path(f).replace_extension(".json").string()) != files.end())
+            continue;
           try {
             in.curves.push_back(beam::readScanTable(f));
           } catch (const InputError& e) {
@@ -223,6 +230,7 @@ Command makeBeamCommand() {
     }
     run.report["files"]["plots"] = plots;
     if (!skipped.empty()) run.report["skipped_files"] = skipped;
+    run.report["program"] = buildInfoJson();
     writeFile(dir / "beam.json", run.report.dump(2) + "\n");
 
     const auto& k = run.report["constants"];

@@ -12,6 +12,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
 #include "beam/scan_table.hpp"
@@ -33,6 +34,7 @@ struct ScanOptions {
   bool resume = false;
   int stopAfter = -1;
   std::string png;  // default: the curve JSON with .png
+  std::string outputDir = ".";
 };
 
 // PNG of the finished curve read back from its JSON: with the quadratic fit of beam/ (window,
@@ -108,7 +110,8 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
 }
 
 int runScanCommand(const ScanOptions& o) {
-  objective::ScanInput in = objective::readScanFile(o.scanFile);
+  objective::ScanInput in = objective::readScanFile(o.scanFile, o.outputDir);
+  prepareOutputFolder(o.outputDir, "<command line>", "option --output-dir");
   in.settings.resume = o.resume;
   in.settings.stopAfter = o.stopAfter;
   // Every output is checked before the first point is computed.
@@ -124,6 +127,23 @@ int runScanCommand(const ScanOptions& o) {
       std::filesystem::exists(in.settings.checkpointPath, ec))
     std::cerr << "mesochain: note: starting afresh; the checkpoint " << in.settings.checkpointPath
               << " will be overwritten (use --resume to continue it)\n";
+  // A row per point as it finishes, flushed (a redirected log follows the scan), before the
+  // table sorted by deformation at the end.
+  double reference = 0.0;
+  const char* unit = objective::deformationUnit(in.settings.kind);
+  in.settings.pointDone = [&reference, unit](const objective::ScanPoint& p, int index, int total) {
+    if (index == 0) {
+      reference = p.energy;
+      std::cout << fmt::format("{:>9} {:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6}\n", "point",
+                               std::string("deformation[") + unit + "]", "energy [Ha/cell]", "E - E(1) [Ha]",
+                               "conv", "max|F|", "time[s]", "evals");
+    }
+    std::cout << fmt::format("{:>9} {:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6}\n",
+                             fmt::format("{}/{}", index + 1, total), p.deformation, p.energy,
+                             p.energy - reference, p.converged ? "yes" : "NO", p.maxForce, p.timeSeconds,
+                             p.evaluations)
+              << std::flush;
+  };
   const objective::ScanResult r =
       objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
                          objective::calculatorSettings(in.cell), in.settings);
@@ -145,12 +165,12 @@ int runScanCommand(const ScanOptions& o) {
   if (!r.complete) {
     std::cerr << fmt::format("mesochain: stopped after {} new points as asked; continue with "
                              "--resume\n", r.computed);
-    return 4;
+    return kStoppedAsAsked;
   }
   for (const auto& p : r.points)
     if (!p.converged) {
       std::cerr << "mesochain: warning: some points did not converge within the step limit\n";
-      return 3;
+      return kNotConverged;
     }
   return 0;
 }
@@ -168,6 +188,9 @@ Command makeScanCommand() {
     s->add_option("--stop-after", opts->stopAfter,
                   "compute at most N new points, then stop (resume later with --resume)")
         ->check(integerIn(0, 1000000000));
+    s->add_option("-o,--output-dir", opts->outputDir,
+                  "folder of the outputs: the [output] paths of the scan file are relative to it")
+        ->check(nonEmptyPath());
     s->add_option("--png", opts->png,
                   "PNG of the finished curve with its fit (default: the curve JSON with .png)")
         ->check(nonEmptyPath());

@@ -5,7 +5,8 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config
   libeigen3-dev liblapack-dev libopenblas-dev liblapacke-dev
-  libfftw3-dev libxc-dev libgtest-dev
+  libxc-dev
+  libfftw3-dev libgtest-dev  # tests only (scripts/test.sh)
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libpng-dev
 )

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
 #include "mdem/contacts/element_pairs.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
@@ -99,6 +100,7 @@ void writeFilmStatisticsJson(const FilmStatistics& f, const std::string& path) {
   j["orientation_eigenvalues"] = {f.lambda1, f.lambda2};
   j["order_parameter"] = f.orderParameter;
   j["director_angle_deg"] = f.directorAngleDeg;
+  j["program"] = buildInfoJson();
   const std::filesystem::path target(path), tmp = target.string() + ".tmp";
   {
     std::ofstream out(tmp);
