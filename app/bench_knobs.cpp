@@ -30,6 +30,7 @@
 #include "app/bench_knobs.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
+#include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/build_info.hpp"
 #include "common/errors.hpp"
@@ -275,6 +276,10 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
 int benchKnobs(const KnobsOptions& o) {
   if (o.linearTerm != "auto" && o.linearTerm != "on" && o.linearTerm != "off")
     throw InputError("<command line>", "--linear-term", "'" + o.linearTerm + "'", "auto, on or off");
+  // The outputs are checked before the (minutes of) evaluations.
+  if (!o.csv.empty()) requireWritableOutput(o.csv, "<command line>", "option --csv");
+  if (!o.json.empty()) requireWritableOutput(o.json, "<command line>", "option --json");
+  if (!o.png.empty()) requireWritableOutput(o.png, "<command line>", "option --png");
   const FinishedScan f = knobs::readFinishedScan(o.scanFile);
   const objective::CellInput& cellInput = f.input.cell;
   const auto params = objective::loadParameters(cellInput);

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
@@ -64,6 +65,7 @@ Row runOne(const std::string& table, int n, int m, objective::ScanKind kind, int
 }
 
 int benchScan(const std::string& table, const std::string& csv) {
+  if (!csv.empty()) requireWritableOutput(csv, "<command line>", "option --csv");  // before the scans
   std::vector<Row> rows;
   std::cout << "stiffness per slice of length T0 from a 3-point quadratic; error against 1024 "
                "k-points at 1e-7 Ha/Bohr\n";
