@@ -22,6 +22,7 @@
 
 #include "app/bench_dftb_lapack.hpp"
 #include "app/commands.hpp"
+#include "app/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/plot/canvas.hpp"
@@ -221,7 +222,7 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
 
 Command makeBenchDftbCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf";
+    std::string table = defaultCarbonTable();
     int repeats = 3;
     bool comparePaths = false;
   };
@@ -243,7 +244,7 @@ Command makeBenchDftbCommand() {
 
 Command makeBenchKpointsCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv, png;
+    std::string table = defaultCarbonTable(), csv, png;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);

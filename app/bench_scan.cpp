@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "app/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/errors.hpp"
@@ -102,7 +103,7 @@ int benchScan(const std::string& table, const std::string& csv) {
 
 Command makeBenchScanCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv;
+    std::string table = defaultCarbonTable(), csv;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);
