@@ -50,6 +50,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct KnobsOptions {
   std::string scanFile;
+  std::string scanOutputDir;
   std::vector<std::string> kpoints, angular, sampling, dispersion, temperature, compare;
   std::string csv, json, png;
   double tolerance = 0.02;
@@ -280,7 +281,7 @@ int benchKnobs(const KnobsOptions& o) {
   if (!o.csv.empty()) requireWritableOutput(o.csv, "<command line>", "option --csv");
   if (!o.json.empty()) requireWritableOutput(o.json, "<command line>", "option --json");
   if (!o.png.empty()) requireWritableOutput(o.png, "<command line>", "option --png");
-  const FinishedScan f = knobs::readFinishedScan(o.scanFile);
+  const FinishedScan f = knobs::readFinishedScan(o.scanFile, o.scanOutputDir);
   const objective::CellInput& cellInput = f.input.cell;
   const auto params = objective::loadParameters(cellInput);
   const dftb::CalculatorSettings straight = objective::calculatorSettings(cellInput);
@@ -480,6 +481,8 @@ Command makeBenchKnobsCommand() {
                  "dispersion and temperature (its relaxed structures re-evaluated)");
     s->add_option("scan", o->scanFile, "the scan file (with [output] structures), already run")
         ->required();
+    s->add_option("--scan-output-dir", o->scanOutputDir,
+                  "the -o folder the scan ran with, where its [output] files are (default: the working folder)");
     s->add_option("--kpoints", o->kpoints, "helical k-points to try, e.g. 12,24,48")->delimiter(',');
     s->add_option("--angular", o->angular, "ring angular samples to try (bend), e.g. 6,12,24,all")
         ->delimiter(',');
