@@ -53,17 +53,17 @@ struct CommandLine : ::testing::Test {
   }
 };
 
-// The commit of the source tree by git itself (empty when git or the checkout is missing).
-std::string gitHead() {
-  const std::string cmd = fmt::format("git -C {} rev-parse --short=12 HEAD 2>/dev/null", MESOCHAIN_SOURCE_DIR);
+// Runs git in the source tree; its exit code (-1 when git is missing), output in `out`.
+int git(const std::string& args, std::string& out) {
+  const std::string cmd = fmt::format("git -C {} {} 2>/dev/null", MESOCHAIN_SOURCE_DIR, args);
   FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return "";
-  char buf[64] = {};
-  const bool got = std::fgets(buf, sizeof buf, p) != nullptr;
-  pclose(p);
-  std::string s = got ? buf : "";
-  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
-  return s;
+  if (!p) return -1;
+  out.clear();
+  char buf[256];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  const int status = pclose(p);
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 TEST_F(CommandLine, VersionNamesTheGitCommitAndTheResultsJsonCarriesIt) {
@@ -73,10 +73,19 @@ TEST_F(CommandLine, VersionNamesTheGitCommitAndTheResultsJsonCarriesIt) {
   ASSERT_TRUE(std::regex_match(out, m, std::regex(R"(mesochain \d+\.\d+\.\d+ \(commit ([0-9a-f]{12}(-dirty)?|unknown)\)\n)")))
       << out;
   const std::string commit = m[1];
-  // Built from a git checkout: the commit is git's HEAD (the build ran git; this test asks it
-  // again). Outside a checkout both are "unknown"/empty.
-  const std::string head = gitHead();
-  if (!head.empty()) EXPECT_EQ(commit.substr(0, 12), head);
+  // Built from a git checkout: git itself knows the commit, and it is HEAD or an ancestor of
+  // it (a commit made after the build). Outside a checkout it is "unknown".
+  std::string inside;
+  if (git("rev-parse --is-inside-work-tree", inside) == 0 && inside == "true") {
+    ASSERT_NE(commit, "unknown");
+    const std::string id = commit.substr(0, 12);
+    std::string full;
+    EXPECT_EQ(git("rev-parse --verify " + id + "^{commit}", full), 0) << id;
+    EXPECT_EQ(full.substr(0, 12), id);
+    EXPECT_EQ(git("merge-base --is-ancestor " + id + " HEAD", full), 0) << id;
+  } else {
+    EXPECT_EQ(commit, "unknown");
+  }
   std::string out2;
   ASSERT_EQ(run("version", out2, err), 0);
   EXPECT_EQ(out2, out);
