@@ -94,14 +94,16 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
     os << fmt::format("thickness {:.4f} Bohr ({:.3f} Å), width {:.4f} Bohr ({:.3f} Å)\n",
                       r.thickness, r.thickness * units::kBohrInAngstrom, r.width,
                       r.width * units::kBohrInAngstrom);
-  os << fmt::format("{:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
+  os << fmt::format("{:>14} {:>20} {:>14} {:>12} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
                     std::string("deformation[") + objective::deformationUnit(r.kind) + "]",
-                    "energy [Ha/slice]", straightReference ? "E - E0 [Ha]" : "E - Eleast [Ha]", "conv", "max|F|", "time[s]", "evals",
+                    "energy [Ha/slice]", straightReference ? "E - E0 [Ha]" : "E - Eleast [Ha]",
+                    straightReference ? "E - E0 [meV]" : "E-Eleast[meV]", "conv", "max|F|", "time[s]", "evals",
                     "k x mu", bend ? "  measured 1/R" : "");
   for (const auto& p : r.points) {
-    os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
-                      p.deformation, p.energy * r.cellsPerSlice,
-                      p.energy * r.cellsPerSlice - e0, p.converged ? "yes" : "NO",
+    const double de = p.energy * r.cellsPerSlice - e0;
+    os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>12.6f} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
+                      p.deformation, p.energy * r.cellsPerSlice, de, de * units::kHartreeInEv * 1000.0,
+                      p.converged ? "yes" : "NO",
                       p.maxForce, p.timeSeconds, p.evaluations,
                       fmt::format("{}x{}", p.helicalKPoints, p.angularPoints));
     if (bend) os << fmt::format("  {:.6e}", std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature);
