@@ -206,9 +206,9 @@ Command makeBuildCommand() {
     g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")
         ->required()
         ->check(integerIn(3, 10000000, "as rotation_order of the cell file"));
-    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector (default 1)")
+    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector")
         ->check(integerIn(1, 1000));
-    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)")->check(finiteNumber(false));
+    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å")->check(finiteNumber(false));
     addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
     subs->ring = g;
   };

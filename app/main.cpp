@@ -3,6 +3,7 @@
 // Global options (before or after the subcommand): --version, -q, -v, --set; exit codes in
 // app/exit_codes.hpp (docs/command-line.md).
 #include <exception>
+#include <functional>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -34,6 +35,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<app::Command> commands = app::allCommands();
   for (auto& c : commands) c.attach(app);
+  // An empty list has no default worth showing ("=[]").
+  std::function<void(CLI::App*)> hideEmptyDefaults = [&](CLI::App* a) {
+    for (CLI::Option* o : a->get_options())
+      if (o->get_default_str() == "[]") o->default_str("");
+    for (CLI::App* sub : a->get_subcommands([](CLI::App*) { return true; })) hideEmptyDefaults(sub);
+  };
+  hideEmptyDefaults(&app);
   try {
     app.parse(argc, argv);
     if (quiet && verbose) throw CLI::ValidationError("-q and -v", "at most one of them");
