@@ -49,9 +49,10 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
                    double time, long step) {
   // Extended XYZ as ASE (ase.io.read) and OVITO read it: `species` must be a chemical symbol, so
   // every element is the placeholder C (carbon filaments) and its element type is the column
-  // type_name; the comment line states the units (mDEM's system, docs/mdem-units.md).
+  // type_name (and its index, type_id, for tools that take numeric columns only); the comment
+  // line states the units (mDEM's system, docs/mdem-units.md).
   out << b.size() << "\n";
-  out << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:velo:R:3:type_name:S:1"
+  out << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:velo:R:3:type_name:S:1:type_id:I:1"
       << fmt::format(" Time={:.10g} Step={} pbc=\"F F F\"", time, step)
       << " units=\"pos:nm velo:nm/ns Time:ns aspherical_shape:nm(half-extents) orientation:quaternion(x,y,z,w)\"\n";
   for (int i = 0; i < b.size(); ++i) {
@@ -61,9 +62,9 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
     const Vec3 e = t.halfExtents();
     const Vec3& v = b.velocity[i];
     out << fmt::format("C {:.10g} {:.10g} {:.10g} {:.12g} {:.12g} {:.12g} {:.12g} {:.6g} {:.6g} "
-                       "{:.6g} {:.8g} {:.8g} {:.8g} {}\n",
+                       "{:.6g} {:.8g} {:.8g} {:.8g} {} {}\n",
                        x.x(), x.y(), x.z(), q.x, q.y, q.z, q.w, e.x(), e.y(), e.z(),
-                       v.x(), v.y(), v.z(), t.name);
+                       v.x(), v.y(), v.z(), t.name, b.type[i]);
   }
 }
 

@@ -142,6 +142,7 @@ TEST(MdemTrajectoryFiles, ExtendedXyzFollowsTheAseRules) {
     const auto& a = f.atoms[i];
     EXPECT_EQ(a.at("species")[0], "C");
     EXPECT_EQ(a.at("type_name")[0], "collapsed_cnt");  // the element type, in its own column
+    EXPECT_EQ(a.at("type_id")[0], "0");
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(std::stod(a.at("pos")[c]), s.bodies.position[i][c], 1e-9);
       EXPECT_NEAR(std::stod(a.at("velo")[c]), s.bodies.velocity[i][c], 1e-7);
@@ -157,7 +158,7 @@ TEST(MdemTrajectoryFiles, ExtendedXyzFollowsTheAseRules) {
 
 TEST(MdemTrajectoryFiles, TheReaderCatchesABrokenColumn) {
   // The reader above is strict enough to fail: a type name with a space (which the scene reader
-  // refuses, mdem/scene_file.cpp) would give a fifteenth token on the atom line.
+  // refuses, mdem/scene_file.cpp) would give one token too many on the atom line.
   Scene s = filament(1);
   s.elementTypes[0].name = "two words";
   std::ostringstream text;
