@@ -351,7 +351,7 @@ int benchKnobs(const KnobsOptions& o) {
   int total = n;
   for (const auto& s : series)
     for (const KnobSetting& k : s) total += k.own ? 0 : n;
-  ProgressBar bar("bench knobs", total);
+  ProgressBar bar("bench knobs", total, std::max(1, total / 20));  // off a terminal: about 20 lines
   int done = 0;
   // One untimed evaluation first: the first one of a process also pays one-off start-up costs.
   {
