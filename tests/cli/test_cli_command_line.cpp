@@ -225,3 +225,27 @@ TEST_F(CommandLine, ParameterSetsFromTheSearchPathAndByPrefix) {
 }
 
 }  // namespace
+
+namespace {
+
+// dem and skgen off a terminal: a plain line per tenth of the run / per stage, no '\r'; -q: none.
+TEST_F(CommandLine, DemAndSkgenProgressLinesOffATerminal) {
+  const std::string scene = fmt::format("{}/examples/cantilever.toml --set run.steps=2000 --set run.minimum_steps=2000",
+                                        MESOCHAIN_SOURCE_DIR);
+  std::string out, err;
+  ASSERT_EQ(run("dem " + scene + " -o d", out, err), 0) << err;
+  EXPECT_EQ(err.find('\r'), std::string::npos);
+  for (int k = 10; k <= 100; k += 10)
+    EXPECT_NE(err.find(fmt::format("dem (% of steps): {}/100 ", k)), std::string::npos) << err;
+  EXPECT_EQ(err.find("dem (% of steps): 5/100"), std::string::npos) << err;
+  EXPECT_TRUE(fs::exists(dir / "d" / "vtk" / "frame.pvd"));
+  ASSERT_EQ(run("-q dem " + scene + " -o d2", out, err), 0) << err;
+  EXPECT_EQ(err.find("dem (% of steps)"), std::string::npos) << err;
+  ASSERT_EQ(run(fmt::format("skgen {}/tests/data/skgen/cli-hydrogen.toml -o sk", MESOCHAIN_SOURCE_DIR), out, err), 0)
+      << err;
+  EXPECT_EQ(err.find('\r'), std::string::npos);
+  EXPECT_NE(err.find("skgen (% of work): atom H\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("skgen (% of work): pair H-H\n"), std::string::npos) << err;
+}
+
+}  // namespace
