@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -16,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
+#include "common/csv.hpp"
 
 namespace {
 
@@ -246,6 +249,35 @@ TEST_F(CommandLine, DemAndSkgenProgressLinesOffATerminal) {
   EXPECT_EQ(err.find('\r'), std::string::npos);
   EXPECT_NE(err.find("skgen (% of work): atom H\n"), std::string::npos) << err;
   EXPECT_NE(err.find("skgen (% of work): pair H-H\n"), std::string::npos) << err;
+}
+
+}  // namespace
+
+namespace {
+
+// `bench kpoints --csv -` (issue 18: "(10,10)" written unquoted gave 7 fields under 6 headers):
+// the CSV on stdout, the table on stderr; every record has as many RFC 4180 fields as the header.
+TEST_F(CommandLine, BenchKpointsCsvIsQuotedAndCanGoToStdout) {
+  std::string out, err;
+  ASSERT_EQ(run("bench kpoints --csv -", out, err), 0) << err;
+  std::istringstream lines(out);
+  std::string line;
+  std::vector<std::string> header, fields;
+  ASSERT_TRUE(std::getline(lines, line));
+  ASSERT_TRUE(mesochain::csvParseRecord(line, header));
+  EXPECT_EQ(header.size(), 6u);
+  int records = 0;
+  std::set<std::string> tubes;
+  while (std::getline(lines, line)) {
+    ASSERT_TRUE(mesochain::csvParseRecord(line, fields)) << line;
+    EXPECT_EQ(fields.size(), header.size()) << line;
+    tubes.insert(fields[0]);
+    ++records;
+  }
+  EXPECT_EQ(records, 32);  // 2 tubes x 2 temperatures x 8 grids
+  EXPECT_EQ(tubes, (std::set<std::string>{"(10,10)", "(10,0)"}));
+  EXPECT_NE(err.find("F per atom (Ha)"), std::string::npos) << err;  // the table on stderr
+  EXPECT_FALSE(fs::exists(dir / "-"));
 }
 
 }  // namespace
