@@ -1,5 +1,6 @@
 #include "common/toml_file.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
