@@ -22,6 +22,9 @@
 
 #include "app/bench_dftb_lapack.hpp"
 #include "app/commands.hpp"
+#include "app/default_parameters.hpp"
+#include "common/atomic_file.hpp"
+#include "common/csv.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
@@ -180,14 +183,20 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
   // Error of the free energy per atom against the number of kappa points, and its cost, for a
   // metallic (10,10) and a semiconducting (10,0) tube; the reference is a 4x denser grid.
   const double bond = 1.42 * units::kAngstromInBohr;
-  std::ofstream out;
+  // The CSV is written (atomically) at the end; with --csv - it is the standard output and the
+  // table goes to stderr.
+  std::string out;
   if (!csv.empty()) {
-    out.open(csv);
-    out << "tube,kelvin,kappa_points,seconds,free_energy_per_atom_hartree,abs_error_hartree\n";
-    if (png.empty()) png = std::filesystem::path(csv).replace_extension(".png").string();
+    out = "tube,kelvin,kappa_points,seconds,free_energy_per_atom_hartree,abs_error_hartree\n";
+    if (png.empty() && !isStandardOutput(csv))
+      png = std::filesystem::path(csv).replace_extension(".png").string();
   }
+  // Checked before the (minutes of) computation.
+  if (!csv.empty()) requireWritableOutput(csv, "<command line>", "option --csv");
+  if (!png.empty()) requireWritableOutput(png, "<command line>", "option --png");
+  std::ostream& human = isStandardOutput(csv) ? std::cerr : std::cout;
   std::vector<KpointCurve> curves;
-  std::cout << fmt::format("{:<8} {:>7} {:>8} {:>12} {:>22} {:>12}\n", "tube", "T (K)", "kappa",
+  human << fmt::format("{:<8} {:>7} {:>8} {:>12} {:>22} {:>12}\n", "tube", "T (K)", "kappa",
                            "seconds", "F per atom (Ha)", "|error| (Ha)");
   for (auto [n, m] : {std::pair{10, 10}, std::pair{10, 0}})
     for (double kelvin : {300.0, 30.0}) {
@@ -200,14 +209,17 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
         const auto a = Clock::now();
         const double f = calculator(table, nk, kelvin).evaluate(cell, {}).freeEnergy / 2;
         const double s = std::chrono::duration<double>(Clock::now() - a).count();
-        std::cout << fmt::format("{:<8} {:>7.0f} {:>8} {:>12.5f} {:>22.12f} {:>12.3e}\n", tube,
-                                 kelvin, nk, s, f, std::abs(f - ref));
-        if (out) out << fmt::format("{},{},{},{},{:.15g},{:.6e}\n", tube, kelvin, nk, s, f, std::abs(f - ref));
+        human << fmt::format("{:<8} {:>7.0f} {:>8} {:>12.5f} {:>22.12f} {:>12.3e}\n", tube, kelvin, nk, s, f,
+                             std::abs(f - ref))
+              << std::flush;
+        if (!csv.empty())
+          out += csvField(tube) + fmt::format(",{},{},{},{:.15g},{:.6e}\n", kelvin, nk, s, f, std::abs(f - ref));
         curve.kappa.push_back(nk);
         curve.seconds.push_back(s);
         curve.error.push_back(std::abs(f - ref));
       }
     }
+  if (!csv.empty()) writeFileAtomically(csv, out);
   if (!png.empty()) plotKpoints(curves, png);
   return 0;
 }
@@ -215,7 +227,7 @@ int benchKpoints(const std::string& table, const std::string& csv, std::string p
 
 Command makeBenchDftbCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf";
+    std::string table = defaultCarbonTable();
     int repeats = 3;
     bool comparePaths = false;
   };
@@ -237,7 +249,7 @@ Command makeBenchDftbCommand() {
 
 Command makeBenchKpointsCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv, png;
+    std::string table = defaultCarbonTable(), csv, png;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);
@@ -245,7 +257,7 @@ Command makeBenchKpointsCommand() {
   c.attach = [o, sub](CLI::App& bench) {
     auto* s = bench.add_subcommand("kpoints", "error against time of the helical k-point count");
     s->add_option("--table", o->table, "C-C Slater-Koster table");
-    s->add_option("--csv", o->csv, "write the curve as CSV");
+    s->add_option("--csv", o->csv, "write the curve as CSV (- for the standard output)");
     s->add_option("--png", o->png,
                   "plot error vs kappa points and vs time (log-log) here (default with --csv: "
                   "the CSV path with .png)");

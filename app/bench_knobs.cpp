@@ -30,6 +30,9 @@
 #include "app/bench_knobs.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
+#include "common/atomic_file.hpp"
+#include "common/csv.hpp"
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
 #include "common/plot/figure.hpp"
 #include "common/progress_bar.hpp"
@@ -47,6 +50,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct KnobsOptions {
   std::string scanFile;
+  std::string scanOutputDir;
   std::vector<std::string> kpoints, angular, sampling, dispersion, temperature, compare;
   std::string csv, json, png;
   double tolerance = 0.02;
@@ -200,12 +204,6 @@ Row relaxationRow(const std::string& path, const beam::ScanCurve& curve, const K
   return r;
 }
 
-std::string csvField(const std::string& s) {
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
-
 void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vector<Row>& rows,
                   const json& header) {
   if (!o.csv.empty()) {
@@ -216,7 +214,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
            "max_force_hartree_per_bohr,note\n";
     for (const Row& r : rows)
       out << fmt::format("{},{},{},{},{:.12g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{},{:.4g},{}\n",
-                         r.knob, csvField(r.setting), r.own, r.reference, r.constant,
+                         csvField(r.knob), csvField(r.setting), r.own, r.reference, r.constant,
                          r.uncertainty, r.relative, r.cpuPerEvaluation, r.wallPerEvaluation,
                          r.totalWall, r.evaluations, r.maxForce, csvField(r.note));
     std::cerr << "wrote " << o.csv << "\n";
@@ -235,6 +233,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
                            {"total_wall_s", num(r.totalWall)}, {"evaluations", r.evaluations},
                            {"max_force_hartree_per_bohr", num(r.maxForce)},
                            {"note", r.note}});
+    j["program"] = buildInfoJson();
     std::ofstream out(o.json);
     if (!out) throw InputError(o.json, "cannot open the JSON output for writing");
     out << j.dump(2) << "\n";
@@ -278,7 +277,11 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
 int benchKnobs(const KnobsOptions& o) {
   if (o.linearTerm != "auto" && o.linearTerm != "on" && o.linearTerm != "off")
     throw InputError("<command line>", "--linear-term", "'" + o.linearTerm + "'", "auto, on or off");
-  const FinishedScan f = knobs::readFinishedScan(o.scanFile);
+  // The outputs are checked before the (minutes of) evaluations.
+  if (!o.csv.empty()) requireWritableOutput(o.csv, "<command line>", "option --csv");
+  if (!o.json.empty()) requireWritableOutput(o.json, "<command line>", "option --json");
+  if (!o.png.empty()) requireWritableOutput(o.png, "<command line>", "option --png");
+  const FinishedScan f = knobs::readFinishedScan(o.scanFile, o.scanOutputDir);
   const objective::CellInput& cellInput = f.input.cell;
   const auto params = objective::loadParameters(cellInput);
   const dftb::CalculatorSettings straight = objective::calculatorSettings(cellInput);
@@ -348,7 +351,7 @@ int benchKnobs(const KnobsOptions& o) {
   int total = n;
   for (const auto& s : series)
     for (const KnobSetting& k : s) total += k.own ? 0 : n;
-  ProgressBar bar("bench knobs", total);
+  ProgressBar bar("bench knobs", total, std::max(1, total / 20));  // off a terminal: about 20 lines
   int done = 0;
   // One untimed evaluation first: the first one of a process also pays one-off start-up costs.
   {
@@ -478,6 +481,8 @@ Command makeBenchKnobsCommand() {
                  "dispersion and temperature (its relaxed structures re-evaluated)");
     s->add_option("scan", o->scanFile, "the scan file (with [output] structures), already run")
         ->required();
+    s->add_option("--scan-output-dir", o->scanOutputDir,
+                  "the -o folder the scan ran with, where its [output] files are (default: the working folder)");
     s->add_option("--kpoints", o->kpoints, "helical k-points to try, e.g. 12,24,48")->delimiter(',');
     s->add_option("--angular", o->angular, "ring angular samples to try (bend), e.g. 6,12,24,all")
         ->delimiter(',');

@@ -28,7 +28,9 @@ struct FinishedScan {
 // structures than curve points, or a structure's symmetry does not give its point's
 // deformation (stretch: T/T0 - 1; twist: gamma - gamma of the reference; bend: 2 pi/(N_a T0)
 // for a ring or sector, 0 for the straight reference) or its energy.
-FinishedScan readFinishedScan(const std::string& scanFile);
+// `scanOutputDir`: the -o folder the scan ran with ("" = the working folder), where its
+// [output] files are.
+FinishedScan readFinishedScan(const std::string& scanFile, const std::string& scanOutputDir = "");
 
 // One setting of one knob: how it changes the calculator settings of the straight (T > 0)
 // points and of the ring (T = 0) points.

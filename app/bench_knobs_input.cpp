@@ -76,9 +76,9 @@ std::vector<KnobSetting> finish(std::vector<KnobSetting> listed, KnobSetting own
 
 }  // namespace
 
-FinishedScan readFinishedScan(const std::string& scanFile) {
+FinishedScan readFinishedScan(const std::string& scanFile, const std::string& scanOutputDir) {
   FinishedScan f;
-  f.input = objective::readScanFile(scanFile);
+  f.input = objective::readScanFile(scanFile, scanOutputDir);
   const std::string& prefix = f.input.structurePrefix;
   if (prefix.empty())
     throw InputError(scanFile, "[output] structures", "no structures key",

@@ -16,6 +16,9 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "app/default_parameters.hpp"
+#include "common/atomic_file.hpp"
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/nanotube_builder.hpp"
@@ -63,10 +66,12 @@ Row runOne(const std::string& table, int n, int m, objective::ScanKind kind, int
 }
 
 int benchScan(const std::string& table, const std::string& csv) {
+  if (!csv.empty()) requireWritableOutput(csv, "<command line>", "option --csv");  // before the scans
   std::vector<Row> rows;
-  std::cout << "stiffness per slice of length T0 from a 3-point quadratic; error against 1024 "
+  std::ostream& human = isStandardOutput(csv) ? std::cerr : std::cout;  // --csv -: the CSV on stdout
+  human << "stiffness per slice of length T0 from a 3-point quadratic; error against 1024 "
                "k-points at 1e-7 Ha/Bohr\n";
-  std::cout << fmt::format("{:7} {:8} {:>6} {:>9} {:>16} {:>10} {:>8} {:>6}\n", "tube", "kind", "k",
+  human << fmt::format("{:7} {:8} {:>6} {:>9} {:>16} {:>10} {:>8} {:>6}\n", "tube", "kind", "k",
                            "tol", "stiffness [Ha]", "rel.error", "time[s]", "evals");
   for (auto [n, m] : std::vector<std::pair<int, int>>{{5, 5}, {10, 0}})
     for (auto kind : {objective::ScanKind::Stretch, objective::ScanKind::Twist}) {
@@ -76,21 +81,20 @@ int benchScan(const std::string& table, const std::string& csv) {
       for (double tol : {1e-3, 1e-4, 1e-6}) set.push_back(runOne(table, n, m, kind, 128, tol));
       set.push_back(ref);
       for (const Row& r : set) {
-        std::cout << fmt::format("{:7} {:8} {:>6} {:>9.0e} {:>16.8f} {:>10.1e} {:>8.3f} {:>6}\n",
+        human << fmt::format("{:7} {:8} {:>6} {:>9.0e} {:>16.8f} {:>10.1e} {:>8.3f} {:>6}\n",
                                  r.tube, r.kind, r.kpoints, r.tolerance, r.stiffness,
                                  std::abs(r.stiffness / ref.stiffness - 1), r.seconds,
                                  r.evaluations);
         rows.push_back(r);
       }
-      std::cout << std::flush;
+      human << std::flush;
     }
   if (!csv.empty()) {
-    std::ofstream f(csv);
-    if (!f) throw InputError(csv, "cannot open the CSV output for writing");
-    f << "tube,kind,kpoints,force_tolerance_hartree_per_bohr,stiffness_hartree,time_s,evaluations\n";
+    std::string f = "tube,kind,kpoints,force_tolerance_hartree_per_bohr,stiffness_hartree,time_s,evaluations\n";
     for (const Row& r : rows)
-      f << fmt::format("\"{}\",{},{},{:.0e},{:.12g},{:.4f},{}\n", r.tube, r.kind, r.kpoints,
-                       r.tolerance, r.stiffness, r.seconds, r.evaluations);
+      f += csvField(r.tube) + "," + csvField(r.kind) +
+           fmt::format(",{},{:.0e},{:.12g},{:.4f},{}\n", r.kpoints, r.tolerance, r.stiffness, r.seconds, r.evaluations);
+    writeFileAtomically(csv, f);
   }
   return 0;
 }
@@ -99,7 +103,7 @@ int benchScan(const std::string& table, const std::string& csv) {
 
 Command makeBenchScanCommand() {
   struct Opts {
-    std::string table = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3/C-C.skf", csv;
+    std::string table = defaultCarbonTable(), csv;
   };
   auto o = std::make_shared<Opts>();
   auto sub = std::make_shared<CLI::App*>(nullptr);
@@ -108,7 +112,7 @@ Command makeBenchScanCommand() {
     auto* s = bench.add_subcommand(
         "scan", "fitted stretch/twist stiffness and time against k-points and relax tolerance");
     s->add_option("--table", o->table, "C-C Slater-Koster table");
-    s->add_option("--csv", o->csv, "write the rows as CSV");
+    s->add_option("--csv", o->csv, "write the rows as CSV (- for the standard output)");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

@@ -13,6 +13,7 @@
 #include <omp.h>
 
 #include "app/commands.hpp"
+#include "app/default_parameters.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
@@ -128,7 +129,7 @@ int benchScc(const std::string& params, int repeats) {
 
 Command makeBenchSccCommand() {
   struct Opts {
-    std::string params = std::string(MESOCHAIN_PARAMS_DIR) + "/pbc-0-3";
+    std::string params = defaultParameterSetFolder();
     int repeats = 2;
   };
   auto o = std::make_shared<Opts>();

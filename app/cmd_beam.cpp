@@ -20,6 +20,7 @@
 #include "beam/mdem_export.hpp"
 #include "beam/plate_run.hpp"
 #include "beam/si_units.hpp"
+#include "common/build_info.hpp"
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
@@ -79,6 +80,7 @@ int runPlateCommand(const PlateOptions& o) {
   const std::string png = (dir / "plate.png").string();
   plot::writePng(png, beam::renderPlatePlot(run));
   run.report["files"] = {{"plot", png}, {"fit_plots", fits}};
+  run.report["program"] = buildInfoJson();
   writeFile(dir / "plate.json", run.report.dump(2) + "\n");
   std::cout << fmt::format("D1 = {:.6g} eV ({})\n", run.singleLayer * units::kHartreeInEv,
                            run.report["inputs"]["single_layer_rigidity_source"].get<std::string>());
@@ -111,17 +113,17 @@ Command makeBeamCommand() {
                   "scan tables (.json, .csv), folders of them, and/or a constants file (.toml)");
     s->add_option("-n,--cells-per-brick", opt->cellsPerBrick, "cells per brick (L = n T0)")
         ->check(integerIn(1, beam::kMaxCellsPerBrick));
-    s->add_option("--closure", opt->closure, "four_constants (default) or measured_thickness")
+    s->add_option("--closure", opt->closure, "four_constants or measured_thickness")
         ->check(CLI::IsMember({"four_constants", "measured_thickness"}));
-    s->add_option("--section", opt->section, "rectangle (default), circle or annulus")
+    s->add_option("--section", opt->section, "rectangle, circle or annulus")
         ->check(CLI::IsMember({"rectangle", "circle", "annulus"}));
-    s->add_option("--wall-thickness-angstrom", opt->wallAngstrom, "annulus wall (default 3.4)")
+    s->add_option("--wall-thickness-angstrom", opt->wallAngstrom, "annulus wall")
         ->check(finiteNumber(false));
     s->add_option("--thickness-angstrom", opt->thicknessAngstrom, "measured thickness h (overrides the scans')")
         ->check(finiteNumber(false));
     s->add_option("--linear-term", opt->linearTerm, "auto (stretch, twist: on; bend: off), on, off")
         ->check(CLI::IsMember({"auto", "on", "off"}));
-    s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime (default 0.02)")
+    s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime")
         ->check(finiteNumber(false, 1.0));
     s->add_flag("--measured-curvature", opt->measuredCurvature, "fit bends against the measured curvature");
     s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)")->check(finiteNumber(false));
@@ -135,7 +137,7 @@ Command makeBeamCommand() {
         ->check(integerIn(1, beam::kMaxAtomsPerCell));
     s->add_option("-o,--output-dir", opt->outputDir, "folder for beam.json, model.toml, cantilever.toml")
         ->check(nonEmptyPath());
-    s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene (default 11)")
+    s->add_option("--bricks", opt->bricks, "bricks in the cantilever scene")
         ->check(integerIn(2, 1000000));
     CLI::App* p = s->add_subcommand(
         "plate", "N-layer bending rigidities (bend scans or given) against the bonded plate and sliding layers");
@@ -143,7 +145,7 @@ Command makeBeamCommand() {
     p->add_option("file", plate->file, "plate file (.toml, docs/beam.md)")->required();
     p->add_option("-o,--output-dir", plate->outputDir, "folder for plate.json, plate.png and fit plots")
         ->check(nonEmptyPath());
-    p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime (default 0.02)")
+    p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime")
         ->check(finiteNumber(false, 1.0));
     p->add_flag("--measured-curvature", plate->measuredCurvature, "fit bends against the measured curvature");
   };
@@ -154,7 +156,12 @@ Command makeBeamCommand() {
     std::vector<std::string> skipped;
     for (const std::string& p : opt->inputs) {
       if (fs::is_directory(p)) {
-        for (const std::string& f : beam::scanFilesIn(p)) {
+        const std::vector<std::string> files = beam::scanFilesIn(p);
+        for (const std::string& f : files) {
+          // scan writes each curve as JSON and CSV (the same numbers): the JSON is read.
+          if (fs::path(f).extension() == ".csv" &&
+              std::find(files.begin(), files.end(), fs::path(f).replace_extension(".json").string()) != files.end())
+            continue;
           try {
             in.curves.push_back(beam::readScanTable(f));
           } catch (const InputError& e) {
@@ -223,6 +230,7 @@ Command makeBeamCommand() {
     }
     run.report["files"]["plots"] = plots;
     if (!skipped.empty()) run.report["skipped_files"] = skipped;
+    run.report["program"] = buildInfoJson();
     writeFile(dir / "beam.json", run.report.dump(2) + "\n");
 
     const auto& k = run.report["constants"];

@@ -61,10 +61,10 @@ void addCommonOptions(CLI::App* s, CommonOptions& o, const std::string& defaultN
   s->add_option("--kpoints", o.kpoints, "helical k-points (default: from the cell length)")
       ->check(integerIn(1, 1000000, "the limit of [kpoints] helical"));
   s->add_option("--temperature", o.kelvin, "electronic temperature, K")->check(finiteNumber(false));
-  s->add_option("--set", o.set, "parameter set folder under params/");
+  s->add_option("--parameter-set", o.set, "parameter set: a folder under params/ (docs/cell-file.md, [parameters] set)");
   s->add_option("--task", o.task, "energy | forces | relax")
       ->check(CLI::IsMember({"energy", "forces", "relax"}));
-  s->add_option("-o,--output", o.output, "cell file to write (default " + defaultName + ")")
+  s->add_option("-o,--output", o.output, "cell file to write (default " + defaultName + "; - for the standard output)")
       ->check(nonEmptyPath());
 }
 
@@ -105,11 +105,12 @@ int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std:
                               : 1;
   in.electronicTemperature = o.kelvin * units::kBoltzmannHartreePerKelvin;
   in.parameterSet = o.set;
-  in.parameterFiles = objective::parameterSetFiles(o.set, in.cell.speciesNames, "<command line>", "--set");
+  in.parameterFiles = objective::parameterSetFiles(o.set, in.cell.speciesNames, "<command line>", "--parameter-set");
   in.task.type = o.task;
   in.task.relaxTranslation = o.task == "relax" && !in.cell.symmetry.isRing();
   objective::writeCellFile(path, in);
-  std::cout << fmt::format("wrote {}: {}, {} atoms, T = {:.6f} Å, twist = {:.6f}°, "
+  // With -o - the cell file is the standard output and this line goes to stderr.
+  (isStandardOutput(path) ? std::cerr : std::cout) << fmt::format("wrote {}: {}, {} atoms, T = {:.6f} Å, twist = {:.6f}°, "
                            "rotation order {}, {} kappa points\n",
                            path, what, in.cell.atomCount(), t * units::kBohrInAngstrom,
                            in.cell.symmetry.twist() / units::kDegree,
@@ -205,9 +206,9 @@ Command makeBuildCommand() {
     g->add_option("--rotation-order", ring->rotationOrder, "N_a, sectors of the full ring (>= 3)")
         ->required()
         ->check(integerIn(3, 10000000, "as rotation_order of the cell file"));
-    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector (default 1)")
+    g->add_option("--cells-along-arc", ring->cellsAlongArc, "sheet cells (C x T parallelograms) per sector")
         ->check(integerIn(1, 1000));
-    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å (default 3.35)")->check(finiteNumber(false));
+    g->add_option("--interlayer", ring->interlayer, "layer spacing, Å")->check(finiteNumber(false));
     addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
     subs->ring = g;
   };

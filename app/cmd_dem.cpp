@@ -1,5 +1,5 @@
 // `mesochain dem SCENE.toml`: runs a mesoscopic distinct element scene (docs/scene-file.md).
-#include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -13,6 +13,7 @@
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "common/errors.hpp"
+#include "common/progress_bar.hpp"
 #include "mdem/contacts/film_statistics.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
@@ -23,20 +24,10 @@ namespace {
 struct DemOptions {
   std::string scene;
   std::string outputDir;
-  bool quiet = false;
   bool resume = false;
   bool overwrite = false;
   bool profile = false;
 };
-
-void drawProgress(double fraction) {
-  constexpr int kWidth = 40;
-  const int filled = static_cast<int>(fraction * kWidth + 0.5);
-  std::string bar(filled, '#');
-  bar.resize(kWidth, ' ');
-  std::fprintf(stderr, "\r[%s] %5.1f%%", bar.c_str(), 100.0 * fraction);
-  std::fflush(stderr);
-}
 }  // namespace
 
 Command makeDemCommand() {
@@ -49,7 +40,6 @@ Command makeDemCommand() {
     (*sub)->add_option("-o,--output-dir", opt->outputDir,
                        "folder for the outputs (default: output.directory of the scene)")
         ->check(nonEmptyPath());
-    (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
     (*sub)->add_flag("--resume", opt->resume,
                      "continue the interrupted run from the checkpoint in the output folder (bit for bit)");
     (*sub)->add_flag("--profile", opt->profile,
@@ -73,14 +63,17 @@ Command makeDemCommand() {
       std::cout << mdem::formatFilmStatistics(*film);
       mdem::writeFilmStatisticsJson(*film, (std::filesystem::path(dir) / "film.json").string());
     }
-    std::function<void(double)> progress;
-    if (!opt->quiet) progress = drawProgress;
+    // Progress in percent of the steps; off a terminal a plain line per tenth of the run.
+    ProgressBar bar("dem (% of steps)", 100, 10);
+    const std::function<void(double)> progress = [&bar](double fraction) {
+      bar.update(static_cast<int>(std::lround(fraction * 100)));
+    };
     if (opt->resume && opt->overwrite)
       throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
     mdem::RunOptions options;
     options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
-    if (!opt->quiet) std::fprintf(stderr, "\n");
+    bar.finish();
     if (!r.removedStale.empty())
       std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
                                r.removedStale.front());

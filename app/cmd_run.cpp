@@ -8,10 +8,10 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "app/run_report.hpp"
 #include "common/atomic_file.hpp"
 #include "common/finite_output.hpp"
@@ -19,6 +19,7 @@
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
+#include "common/progress_bar.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/cell_file.hpp"
@@ -121,7 +122,10 @@ int runCell(const RunOptions& o) {
     throw InputError("<command line>", "option --plot", "task " + in.task.type + " in " + o.cellFile,
                      "a cell file with task relax (the plot shows the relaxation history)");
   const dftb::Calculator calc = objective::makeCalculator(in);
-  const bool tty = isatty(STDERR_FILENO);
+  // The terminal rule of common/progress_bar.hpp: one redrawn line on a terminal, a line per
+  // evaluation otherwise, nothing with -q.
+  const ProgressMode mode = progressMode();
+  const bool tty = mode == ProgressMode::Bar;
   std::unique_ptr<objective::RelaxOutcome> relax;
   dftb::Result result;
   objective::ObjectiveCell cell = in.cell;
@@ -132,15 +136,16 @@ int runCell(const RunOptions& o) {
     rs.maxSteps = in.task.maxSteps;
     rs.relaxTranslation = in.task.relaxTranslation;
     RelaxTrace trace;
-    rs.progress = [tty, &trace](int step, double f, double fmax) {
+    rs.progress = [tty, mode, &trace](int step, double f, double fmax) {
       trace.evaluation.push_back(step);
       trace.freeEnergy.push_back(f);
       trace.maxForce.push_back(fmax);
+      if (mode == ProgressMode::Silent) return;
       std::cerr << fmt::format("{}relax: evaluation {:4d}  F = {:.10f} Ha  max|force| = {:.2e} Ha/Bohr{}",
                                tty ? "\r" : "", step, f, fmax, tty ? "   " : "\n");
     };
     relax = std::make_unique<objective::RelaxOutcome>(objective::relax(calc, cell, rs));
-    if (tty) std::cerr << "\n";
+    if (tty && !trace.evaluation.empty()) std::cerr << "\n";
     cell = relax->cell;
     result = relax->result;
     if (!o.plot.empty()) writeRelaxPlot(o.plot, trace, rs.forceTolerance);
@@ -148,17 +153,18 @@ int runCell(const RunOptions& o) {
     const bool forces = in.task.type == "forces";
     result = calc.evaluate(cell, {forces, forces});
   }
-  printSummary(std::cout, in, cell, result, relax.get());
+  // With --json - the JSON is the standard output and the summary goes to stderr.
+  printSummary(isStandardOutput(o.json) ? std::cerr : std::cout, in, cell, result, relax.get());
   if (!o.json.empty()) {
     const nlohmann::json j = resultJson(in, cell, result, relax.get());
     requireFiniteJson(j, o.json);
     writeFileAtomically(o.json, j.dump(2) + "\n");
-    std::cerr << "wrote " << o.json << "\n";
+    if (!isStandardOutput(o.json)) std::cerr << "wrote " << o.json << "\n";
   }
   if (!prefix.empty()) writeStructures(prefix, cell, result, o.unroll);
   if (relax && !relax->converged) {
     std::cerr << "mesochain: warning: relaxation did not converge within the step limit\n";
-    return 3;
+    return kNotConverged;
   }
   return 0;
 }
@@ -171,7 +177,8 @@ Command makeRunCommand() {
   c.attach = [opts, sub](CLI::App& app) {
     auto* s = app.add_subcommand("run", "energy, forces or relaxation of an objective cell");
     s->add_option("cell", opts->cellFile, "objective-cell input file (TOML)")->required();
-    s->add_option("--json", opts->json, "write the results JSON here")->check(nonEmptyPath());
+    s->add_option("--json", opts->json, "write the results JSON here (- for the standard output)")
+        ->check(nonEmptyPath());
     s->add_option("--structure", opts->structure,
                   "write the final cell as PREFIX.xyz and PREFIX.gen (default for relax: "
                   "<cell>-relaxed)");

@@ -12,6 +12,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
 #include "beam/scan_table.hpp"
@@ -33,6 +34,7 @@ struct ScanOptions {
   bool resume = false;
   int stopAfter = -1;
   std::string png;  // default: the curve JSON with .png
+  std::string outputDir = ".";
 };
 
 // PNG of the finished curve read back from its JSON: with the quadratic fit of beam/ (window,
@@ -92,14 +94,16 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
     os << fmt::format("thickness {:.4f} Bohr ({:.3f} Å), width {:.4f} Bohr ({:.3f} Å)\n",
                       r.thickness, r.thickness * units::kBohrInAngstrom, r.width,
                       r.width * units::kBohrInAngstrom);
-  os << fmt::format("{:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
+  os << fmt::format("{:>14} {:>20} {:>14} {:>12} {:>5} {:>10} {:>8} {:>6} {:>6}{}\n",
                     std::string("deformation[") + objective::deformationUnit(r.kind) + "]",
-                    "energy [Ha/slice]", straightReference ? "E - E0 [Ha]" : "E - Eleast [Ha]", "conv", "max|F|", "time[s]", "evals",
+                    "energy [Ha/slice]", straightReference ? "E - E0 [Ha]" : "E - Eleast [Ha]",
+                    straightReference ? "E - E0 [meV]" : "E-Eleast[meV]", "conv", "max|F|", "time[s]", "evals",
                     "k x mu", bend ? "  measured 1/R" : "");
   for (const auto& p : r.points) {
-    os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
-                      p.deformation, p.energy * r.cellsPerSlice,
-                      p.energy * r.cellsPerSlice - e0, p.converged ? "yes" : "NO",
+    const double de = p.energy * r.cellsPerSlice - e0;
+    os << fmt::format("{:>14.6e} {:>20.10f} {:>14.6e} {:>12.6f} {:>5} {:>10.2e} {:>8.1f} {:>6} {:>6}",
+                      p.deformation, p.energy * r.cellsPerSlice, de, de * units::kHartreeInEv * 1000.0,
+                      p.converged ? "yes" : "NO",
                       p.maxForce, p.timeSeconds, p.evaluations,
                       fmt::format("{}x{}", p.helicalKPoints, p.angularPoints));
     if (bend) os << fmt::format("  {:.6e}", std::isnan(p.measuredCurvature) ? 0.0 : p.measuredCurvature);
@@ -108,7 +112,8 @@ void printTable(std::ostream& os, const objective::ScanResult& r) {
 }
 
 int runScanCommand(const ScanOptions& o) {
-  objective::ScanInput in = objective::readScanFile(o.scanFile);
+  objective::ScanInput in = objective::readScanFile(o.scanFile, o.outputDir);
+  prepareOutputFolder(o.outputDir, "<command line>", "option --output-dir");
   in.settings.resume = o.resume;
   in.settings.stopAfter = o.stopAfter;
   // Every output is checked before the first point is computed.
@@ -124,6 +129,23 @@ int runScanCommand(const ScanOptions& o) {
       std::filesystem::exists(in.settings.checkpointPath, ec))
     std::cerr << "mesochain: note: starting afresh; the checkpoint " << in.settings.checkpointPath
               << " will be overwritten (use --resume to continue it)\n";
+  // A row per point as it finishes, flushed (a redirected log follows the scan), before the
+  // table sorted by deformation at the end.
+  double reference = 0.0;
+  const char* unit = objective::deformationUnit(in.settings.kind);
+  in.settings.pointDone = [&reference, unit](const objective::ScanPoint& p, int index, int total) {
+    if (index == 0) {
+      reference = p.energy;
+      std::cout << fmt::format("{:>9} {:>14} {:>20} {:>14} {:>5} {:>10} {:>8} {:>6}\n", "point",
+                               std::string("deformation[") + unit + "]", "energy [Ha/cell]", "E - E(1) [Ha]",
+                               "conv", "max|F|", "time[s]", "evals");
+    }
+    std::cout << fmt::format("{:>9} {:>14.6e} {:>20.10f} {:>14.6e} {:>5} {:>10.2e} {:>8.1f} {:>6}\n",
+                             fmt::format("{}/{}", index + 1, total), p.deformation, p.energy,
+                             p.energy - reference, p.converged ? "yes" : "NO", p.maxForce, p.timeSeconds,
+                             p.evaluations)
+              << std::flush;
+  };
   const objective::ScanResult r =
       objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
                          objective::calculatorSettings(in.cell), in.settings);
@@ -145,12 +167,12 @@ int runScanCommand(const ScanOptions& o) {
   if (!r.complete) {
     std::cerr << fmt::format("mesochain: stopped after {} new points as asked; continue with "
                              "--resume\n", r.computed);
-    return 4;
+    return kStoppedAsAsked;
   }
   for (const auto& p : r.points)
     if (!p.converged) {
       std::cerr << "mesochain: warning: some points did not converge within the step limit\n";
-      return 3;
+      return kNotConverged;
     }
   return 0;
 }
@@ -168,6 +190,9 @@ Command makeScanCommand() {
     s->add_option("--stop-after", opts->stopAfter,
                   "compute at most N new points, then stop (resume later with --resume)")
         ->check(integerIn(0, 1000000000));
+    s->add_option("-o,--output-dir", opts->outputDir,
+                  "folder of the outputs: the [output] paths of the scan file are relative to it")
+        ->check(nonEmptyPath());
     s->add_option("--png", opts->png,
                   "PNG of the finished curve with its fit (default: the curve JSON with .png)")
         ->check(nonEmptyPath());

@@ -1,6 +1,6 @@
 // `mesochain skgen ELEMENTS.toml`: generates Slater-Koster tables (.skf) from confined atoms
 // (docs/skgen.md).
-#include <cstdio>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,6 +10,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "common/progress_bar.hpp"
 #include "skgen/skgen_job.hpp"
 
 namespace mesochain::app {
@@ -18,17 +19,7 @@ namespace {
 struct SkgenOptions {
   std::string input;
   std::string outputDir;
-  bool quiet = false;
 };
-
-void drawSkgenProgress(double fraction, const std::string& what) {
-  constexpr int kWidth = 40;
-  const int filled = static_cast<int>(fraction * kWidth + 0.5);
-  std::string bar(filled, '#');
-  bar.resize(kWidth, ' ');
-  std::fprintf(stderr, "\r[%s] %5.1f%% %-16s", bar.c_str(), 100.0 * fraction, what.c_str());
-  std::fflush(stderr);
-}
 }  // namespace
 
 Command makeSkgenCommand() {
@@ -40,7 +31,6 @@ Command makeSkgenCommand() {
     (*sub)->add_option("elements", opt->input, "elements file (TOML, docs/skgen.md)")->required();
     (*sub)->add_option("-o,--output-dir", opt->outputDir, "folder for the .skf files (default: output_dir of the file)")
         ->check(nonEmptyPath());
-    (*sub)->add_flag("-q,--quiet", opt->quiet, "no progress bar");
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
@@ -49,11 +39,14 @@ Command makeSkgenCommand() {
     // The output folder is made and checked before the (long) generation.
     prepareOutputFolder(job.outputDir, opt->outputDir.empty() ? opt->input : "<command line>",
                         opt->outputDir.empty() ? "key output_dir" : "option --output-dir");
-    std::function<void(double, const std::string&)> progress;
-    if (!opt->quiet) progress = drawSkgenProgress;
-    const skgen::SkgenOutput out = skgen::runSkgen(job, progress);
+    // Progress in percent of the work; a plain line per stage (atom, pair) off a terminal.
+    ProgressBar bar("skgen (% of work)", 100, 100);
+    const skgen::SkgenOutput out = skgen::runSkgen(job, [&bar](double fraction, const std::string& what) {
+      bar.stage(what);
+      bar.update(static_cast<int>(std::lround(fraction * 100)), what);
+    });
+    bar.finish();
     const std::vector<std::string>& files = out.tables;
-    if (!opt->quiet) std::fprintf(stderr, "\n");
     for (const std::string& f : files) std::cout << "wrote " << f << "\n";
     std::cout << "wrote " << out.atomicData << " (atomic data: on-site energies, U, spin constants)\n";
     int fitted = 0;

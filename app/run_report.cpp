@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "common/build_info.hpp"
 #include "common/units.hpp"
 
 namespace mesochain::app {
@@ -36,8 +37,10 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
   const auto& sym = cell.symmetry;
   json j;
   j["format"] = 1;
-  j["program"] = "mesochain 0.1.0";
+  j["program"] = buildInfoJson();  // name, version, git commit
   j["input"] = input.source;
+  // The tables used (where the set was found: MESOCHAIN_PARAMS_PATH, installed, or the source).
+  j["parameters"] = {{"set", input.parameterSet}, {"files", input.parameterFiles}};
   j["task"] = input.task.type;
   json species = json::array();
   for (int a = 0; a < n; ++a) species.push_back(cell.speciesOf(a));
@@ -138,9 +141,12 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
   if (relax)
     out << fmt::format("relaxation: {} after {} evaluations\n",
                        relax->converged ? "converged" : "NOT converged", relax->evaluations);
-  out << fmt::format("{:<34}{:>20}{:>20}\n", "energy (Hartree)", "per cell", "per atom");
+  // Hartree (the code's unit) and eV (units::kHartreeInEv, CODATA 2018) side by side.
+  out << fmt::format("{:<34}{:>20}{:>20}{:>20}{:>18}\n", "energy", "per cell (Ha)", "per atom (Ha)",
+                     "per cell (eV)", "per atom (eV)");
   auto row = [&](const char* name, double v) {
-    out << fmt::format("{:<34}{:>20.10f}{:>20.10f}\n", name, v, v / n);
+    const double ev = v * units::kHartreeInEv;
+    out << fmt::format("{:<34}{:>20.10f}{:>20.10f}{:>20.8f}{:>18.8f}\n", name, v, v / n, ev, ev / n);
   };
   row("band", r.bandEnergy);
   row("repulsive", r.repulsive);
@@ -150,7 +156,8 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
   row("total", r.totalEnergy);
   row("Mermin free energy", r.freeEnergy);
   row("extrapolated to T = 0", r.extrapolatedEnergy);
-  out << fmt::format("Fermi level: {:.8f} Ha\n", extra(r, "fermi_level"));
+  out << fmt::format("Fermi level: {:.8f} Ha ({:.6f} eV)\n", extra(r, "fermi_level"),
+                     extra(r, "fermi_level") * units::kHartreeInEv);
   if (input.scc.enabled) {
     const bool ok = extra(r, "scc_converged") == 1.0;
     out << fmt::format("SCC: {} after {} iterations (last max charge change {:.2e} e)\n",

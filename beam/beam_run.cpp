@@ -311,7 +311,7 @@ BeamRun runBeam(const BeamInputs& in) {
 namespace {
 
 double tomlNumber(const toml::value& v, const std::string& key, const std::string& path) {
-  const std::string where = fmt::format("key {} (line {})", key, v.location().line());
+  const std::string where = fmt::format("key {} ({})", key, tomlWhere(v));
   double x = 0.0;
   if (v.is_integer()) x = static_cast<double>(v.as_integer());
   else if (v.is_floating()) x = v.as_floating();
@@ -348,7 +348,7 @@ void readConstantsFile(const std::string& path, BeamInputs& in) {
     if (it == keys.end()) {
       std::string list;
       for (const auto& [name, _] : keys) list += (list.empty() ? "" : ", ") + name;
-      throw InputError(path, fmt::format("key {} (line {})", k, v.location().line()), "an unknown key",
+      throw InputError(path, fmt::format("key {} ({})", k, tomlWhere(v)), "an unknown key",
                        "one of " + list);
     }
     const Key key = it->second;
@@ -356,7 +356,7 @@ void readConstantsFile(const std::string& path, BeamInputs& in) {
       throw InputError(path, "key " + k, "also " + seen[key.slot], "one key per quantity (one unit)");
     seen[key.slot] = k;
     const double x = tomlNumber(v, k, path) * key.factor;
-    const std::string where = fmt::format("key {} (line {})", k, v.location().line());
+    const std::string where = fmt::format("key {} ({})", k, tomlWhere(v));
     auto positive = [&] {
       if (!(x > 0.0)) throw InputError(path, where, fmt::format("{:.6g}", x), "a value > 0");
     };

@@ -159,7 +159,7 @@ void readPlateFile(const std::string& path, PlateInputs& in) {
   in.source = path;
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   auto where = [&](const std::string& key, const toml::value& v) {
-    return fmt::format("key {} (line {})", key, v.location().line());
+    return fmt::format("key {} ({})", key, tomlWhere(v));
   };
   auto number = [&](const std::string& key, const toml::value& v) {
     double x = 0.0;

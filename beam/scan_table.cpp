@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::beam {
@@ -172,9 +173,9 @@ ScanCurve parseScanCsv(const std::string& text, const std::string& source) {
       continue;
     }
     std::vector<std::string> cells;
-    std::stringstream row(t);
-    std::string cell;
-    while (std::getline(row, cell, ',')) cells.push_back(trim(cell));
+    if (!csvParseRecord(t, cells))
+      throw InputError(source, where, "a malformed CSV record: " + t, "comma-separated fields quoted as RFC 4180");
+    for (std::string& cell : cells) cell = trim(cell);
     if (columns.empty()) {
       columns = cells;
       colX = column("deformation");

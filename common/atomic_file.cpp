@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <utility>
 
 #include "common/errors.hpp"
@@ -29,8 +30,18 @@ void renameOver(const std::string& from, const std::string& to) {
 }
 }  // namespace
 
+bool isStandardOutput(const std::string& path) { return path == "-"; }
+
 AtomicOutputFile::AtomicOutputFile(std::string path)
-    : path_(std::move(path)), temporary_(temporaryName(path_)) {
+    : path_(std::move(path)), temporary_(isStandardOutput(path_) ? std::string() : temporaryName(path_)) {
+  if (isStandardOutput(path_)) {
+    // "-": the standard output, written directly (appending, so nothing already written to it
+    // is truncated; the caller sends its own messages to stderr).
+    std::cout.flush();
+    stream_.open("/dev/stdout", std::ios::binary | std::ios::app);
+    if (!stream_) throw InputError(path_, std::string("cannot write to the standard output: ") + std::strerror(errno));
+    return;
+  }
   stream_.open(temporary_, std::ios::binary | std::ios::trunc);
   if (!stream_)
     throw InputError(path_, "cannot create the output file (temporary " + temporary_ +
@@ -40,6 +51,7 @@ AtomicOutputFile::AtomicOutputFile(std::string path)
 AtomicOutputFile::~AtomicOutputFile() {
   if (committed_) return;
   stream_.close();
+  if (temporary_.empty()) return;
   std::error_code ec;
   fs::remove(temporary_, ec);
 }
@@ -57,7 +69,7 @@ void AtomicOutputFile::commit() {
     fs::remove(temporary_, ec);
     throw InputError(path_, "writing the output file failed (disk full?)");
   }
-  renameOver(temporary_, path_);
+  if (!temporary_.empty()) renameOver(temporary_, path_);
   committed_ = true;
 }
 
@@ -71,6 +83,7 @@ void requireWritableOutput(const std::string& path, const std::string& source,
                            const std::string& where) {
   if (path.empty())
     throw InputError(source, where, "an empty path", "the path of a file to write");
+  if (isStandardOutput(path)) return;
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw InputError(source, where, "\"" + path + "\", which is a folder",

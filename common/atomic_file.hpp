@@ -8,6 +8,11 @@
 
 namespace mesochain {
 
+// "-" names the standard output wherever a command writes one file result (`run --json -`,
+// `build ... -o -`, `bench kpoints --csv -`); writeFileAtomically and AtomicOutputFile then write
+// to stdout directly, and requireWritableOutput accepts it. (A file named "-" is ./-.)
+bool isStandardOutput(const std::string& path);
+
 // Writes `text` to `path` atomically. InputError naming `path` when the temporary file cannot
 // be created or written (folder missing, not writable, disk full) or the rename fails.
 void writeFileAtomically(const std::string& path, const std::string& text);

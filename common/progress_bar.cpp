@@ -11,16 +11,35 @@
 
 namespace mesochain {
 
-bool progressOutputEnabled() {
+namespace {
+Verbosity& verbosityFlag() {
+  static Verbosity v = Verbosity::Normal;
+  return v;
+}
+}  // namespace
+
+void setVerbosity(Verbosity v) { verbosityFlag() = v; }
+Verbosity verbosity() { return verbosityFlag(); }
+
+ProgressMode progressMode() {
+  if (verbosity() == Verbosity::Quiet) return ProgressMode::Silent;
+  if (verbosity() == Verbosity::Verbose) return ProgressMode::Lines;
   const char* ci = std::getenv("CI");
-  if (ci && std::strcmp(ci, "true") == 0) return false;
-  return isatty(STDERR_FILENO) != 0;
+  if (ci && std::strcmp(ci, "true") == 0) return ProgressMode::Lines;
+  return isatty(STDERR_FILENO) != 0 ? ProgressMode::Bar : ProgressMode::Lines;
 }
 
-ProgressBar::ProgressBar(std::string label, int total)
+bool progressOutputEnabled() { return progressMode() == ProgressMode::Bar; }
+
+ProgressBar::ProgressBar(std::string label, int total, int lineEvery)
+    : ProgressBar(std::move(label), total, lineEvery, progressMode(), std::cerr) {}
+
+ProgressBar::ProgressBar(std::string label, int total, int lineEvery, ProgressMode mode, std::ostream& out)
     : label_(std::move(label)),
       total_(std::max(total, 0)),
-      enabled_(progressOutputEnabled()),
+      lineEvery_(std::max(lineEvery, 1)),
+      mode_(mode),
+      out_(&out),
       start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() { finish(); }
@@ -45,22 +64,47 @@ std::string ProgressBar::render(const std::string& label, int done, int total,
   return line;
 }
 
+std::string ProgressBar::renderLine(const std::string& label, int done, int total, double elapsedSeconds,
+                                    double etaSeconds, const std::string& note) {
+  std::string line = fmt::format("{}: {}/{}  elapsed {}  ETA {}", label, done, total,
+                                 formatDuration(elapsedSeconds), formatDuration(etaSeconds));
+  if (!note.empty()) line += "  " + note;
+  return line;
+}
+
 void ProgressBar::skip(int count) { skipped_ += std::max(count, 0); }
 
+void ProgressBar::stage(const std::string& name) {
+  if (finished_ || name == stage_) return;
+  stage_ = name;
+  if (mode_ == ProgressMode::Lines) *out_ << label_ << ": " << name << "\n" << std::flush;
+}
+
 void ProgressBar::update(int done, const std::string& note) {
-  if (!enabled_ || finished_) return;
+  if (mode_ == ProgressMode::Silent || finished_) return;
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const int timed = done - skipped_;
   const double eta = timed > 0 ? elapsed / timed * (total_ - done) : -1.0;
-  std::cerr << "\r" << render(label_, done, total_, elapsed, eta, note) << "\033[K" << std::flush;
-  drawn_ = true;
+  const std::string shown = note.empty() ? stage_ : note;
+  if (mode_ == ProgressMode::Bar) {
+    *out_ << "\r" << render(label_, done, total_, elapsed, eta, shown) << "\033[K" << std::flush;
+    drawn_ = true;
+    return;
+  }
+  // Lines: a further multiple of lineEvery (or the end) reached; with -v also every new note.
+  const bool step = done > lastLineDone_ && done > skipped_ &&
+                    (done / lineEvery_ > std::max(lastLineDone_, 0) / lineEvery_ || done == total_);
+  const bool newNote = verbosity() == Verbosity::Verbose && !note.empty() && note != lastNote_;
+  if (step || newNote) *out_ << renderLine(label_, done, total_, elapsed, eta, note) << "\n" << std::flush;
+  if (step) lastLineDone_ = done;
+  lastNote_ = note;
 }
 
 void ProgressBar::finish() {
   if (finished_) return;
   finished_ = true;
-  if (enabled_ && drawn_) std::cerr << "\n" << std::flush;
+  if (mode_ == ProgressMode::Bar && drawn_) *out_ << "\n" << std::flush;
 }
 
 }  // namespace mesochain

@@ -1,6 +1,8 @@
 #include "common/toml_file.hpp"
 
+#include <cctype>
 #include <filesystem>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -8,12 +10,33 @@
 
 namespace mesochain {
 
+namespace {
+// The overrides given on the command line, applied to the first file parseTomlFile reads.
+std::vector<TomlOverride>& overrides() {
+  static std::vector<TomlOverride> o;
+  return o;
+}
+bool& overridesApplied() {
+  static bool applied = false;
+  return applied;
+}
+const std::string kSetPrefix = "--set ";
+
+bool isBareKey(const std::string& k) {
+  if (k.empty()) return false;
+  for (char c : k)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+  return true;
+}
+}  // namespace
+
 toml::value parseTomlFile(const std::string& path, const std::string& kind) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(path, "", "no such file (or not a regular file)", "an existing TOML " + kind);
+  toml::value root;
   try {
-    return toml::parse(path);
+    root = toml::parse(path);
   } catch (const toml::syntax_error& e) {
     throw InputError(path, fmt::format("line {}", e.location().line()), "invalid TOML syntax",
                      std::string("valid TOML (") + e.what() + ")");
@@ -21,6 +44,83 @@ toml::value parseTomlFile(const std::string& path, const std::string& kind) {
     throw InputError(path, "", std::string("a file that cannot be read as TOML: ") + e.what(),
                      "a readable TOML " + kind);
   }
+  if (!overridesApplied()) {
+    overridesApplied() = true;
+    for (const TomlOverride& o : overrides()) applyTomlOverride(root, o, path);
+  }
+  return root;
+}
+
+TomlOverride parseTomlOverride(const std::string& text) {
+  const std::string where = "option --set " + text;
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("<command line>", where, "'" + text + "'",
+                     "section.key=value (e.g. kpoints.helical=8; the parameter set of `build` is "
+                     "--parameter-set)");
+  TomlOverride o;
+  o.text = text;
+  std::stringstream keys(text.substr(0, eq));
+  for (std::string k; std::getline(keys, k, '.');) {
+    if (!isBareKey(k))
+      throw InputError("<command line>", where, "the key '" + text.substr(0, eq) + "'",
+                       "dotted bare TOML keys (letters, digits, _ and -), e.g. task.type");
+    o.key.push_back(k);
+  }
+  if (o.key.empty() || text[eq - 1] == '.')
+    throw InputError("<command line>", where, "the key '" + text.substr(0, eq) + "'",
+                     "dotted bare TOML keys, e.g. task.type");
+  const std::string value = text.substr(eq + 1);
+  if (value.empty())
+    throw InputError("<command line>", where, "an empty value", "a TOML value (e.g. 8, 1.5, true, \"pbc-0-3\", [1, 2])");
+  // Read as the TOML line `v = VALUE` from a source named after the option, so a value that
+  // fails the reader's checks is reported as coming from --set.
+  try {
+    std::istringstream in("v = " + value + "\n");
+    o.value = toml::parse(in, kSetPrefix + text).at("v");
+  } catch (const std::exception&) {
+    // A bare word (relax, pbc-0-3) is a string; anything that looks like an attempt at a typed
+    // value (quotes, brackets, braces) must be valid TOML.
+    if (value.find_first_of("\"'[]{}") != std::string::npos)
+      throw InputError("<command line>", where, "'" + value + "', which is not a TOML value",
+                       "a TOML value (e.g. 8, 1.5, true, \"text\", [1, 2])");
+    std::istringstream in("v = " + toml::format(toml::value(value)) + "\n");
+    o.value = toml::parse(in, kSetPrefix + text).at("v");
+  }
+  return o;
+}
+
+void applyTomlOverride(toml::value& root, const TomlOverride& o, const std::string& source) {
+  toml::value* t = &root;
+  std::string path;
+  for (std::size_t i = 0; i + 1 < o.key.size(); ++i) {
+    path += (path.empty() ? "" : ".") + o.key[i];
+    auto& table = t->as_table();
+    auto it = table.find(o.key[i]);
+    if (it == table.end()) {
+      std::istringstream in("v = {}\n");
+      it = table.emplace(o.key[i], toml::parse(in, kSetPrefix + o.text).at("v")).first;
+    }
+    if (!it->second.is_table())
+      throw InputError(source, "key " + path + " (" + tomlWhere(it->second) + ")",
+                       "a value that is not a table, so option --set " + o.text + " cannot set a key in it",
+                       "--set keys of tables ([section] key = value)");
+    t = &it->second;
+  }
+  t->as_table()[o.key.back()] = o.value;
+}
+
+void setTomlOverrides(std::vector<TomlOverride> o) {
+  overrides() = std::move(o);
+  overridesApplied() = false;
+}
+
+bool tomlOverridesUnused() { return !overrides().empty() && !overridesApplied(); }
+
+std::string tomlWhere(const toml::value& v) {
+  const std::string name = v.location().file_name();
+  if (name.rfind(kSetPrefix, 0) == 0) return "set by " + name;
+  return fmt::format("line {}", v.location().line());
 }
 
 }  // namespace mesochain

@@ -53,8 +53,32 @@ void writeXyzFrame(std::ostream& out, const Bodies& b, const std::vector<Element
 struct VtkFields {
   std::vector<double> elementEnergy;  // per element, or empty
   std::vector<BondLoad> bondLoads;    // per bond, or empty
+  // Per element, or empty: half extents in the body frame (nm; x thickness, y width, z length
+  // for a brick; radius, radius, half length for a cylinder) and the shape (0 brick,
+  // 1 cylinder), for ParaView glyphs (scale by half_extents_nm, orient by axis_z).
+  std::vector<Vec3> halfExtents;
+  std::vector<int> shape;
 };
 void writeVtkFrame(const std::string& path, const Bodies& b, const std::vector<Bond>& bonds,
                    double time, const VtkFields& fields = {});
+
+// The ParaView series file PREFIX.pvd beside the frames PREFIX_NNNNNN.vtk: every frame with its
+// time in ns (ParaView's time axis then is the simulation time, not the frame index), rewritten
+// atomically after each frame. A resumed run starts from the frames already written, whose
+// times are read back from their header lines.
+class VtkSeries {
+ public:
+  VtkSeries(std::string prefix, long existingFrames);
+  // Adds the frame just written and rewrites PREFIX.pvd.
+  void add(const std::string& framePath, double time);
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::vector<std::pair<double, std::string>> frames_;  // time (ns), file name
+};
+// The time of a frame from its header line ("... time T ns ..."); InputError naming the file
+// when it has none.
+double vtkFrameTime(const std::string& path);
 
 }  // namespace mesochain::mdem

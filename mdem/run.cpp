@@ -277,6 +277,8 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       if (index >= frame) fs::remove(path, ec), r.removedStale.push_back(path.string());
   std::unique_ptr<AppendFile> xyz;
   if (!o.xyz.empty()) xyz = std::make_unique<AppendFile>(prepare(o.xyz), xyzBytes);
+  std::unique_ptr<VtkSeries> series;
+  if (!vtkPrefix.empty()) series = std::make_unique<VtkSeries>(vtkPrefix, frame);
   const bool frames = xyz || !vtkPrefix.empty();
   auto writeFrame = [&](const Simulation& sim, const Scene& s) {
     if (xyz) {
@@ -291,7 +293,14 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
         e->addElementEnergies(sim.state(), fields.elementEnergy);
         if (e->bondList()) fields.bondLoads = e->bondLoads(sim.state());
       }
-      writeVtkFrame(fmt::format("{}_{:06d}.vtk", vtkPrefix, frame), sim.bodies(), sim.bonds(), sim.time(), fields);
+      for (int i = 0; i < sim.bodies().size(); ++i) {
+        const ElementType& t = s.elementTypes[sim.bodies().type[i]];
+        fields.halfExtents.push_back(t.halfExtents());
+        fields.shape.push_back(t.shape == Shape::Cylinder ? 1 : 0);
+      }
+      const std::string framePath = fmt::format("{}_{:06d}.vtk", vtkPrefix, frame);
+      writeVtkFrame(framePath, sim.bodies(), sim.bonds(), sim.time(), fields);
+      series->add(framePath, sim.time());
     }
     ++frame;
   };

@@ -45,6 +45,9 @@ ElementType readElementType(const TomlTable& t) {
                "density_kg_per_m3"});
   ElementType e;
   e.name = t.string("name");
+  // The name is a column of the extended XYZ trajectory (type_name) and of VTK: one word.
+  if (e.name.empty() || e.name.find_first_of(" \t\n\r\"'") != std::string::npos)
+    t.fail("name", "\"" + e.name + "\"", "a name without spaces or quotes (e.g. collapsed_cnt)");
   const std::string shape = t.string("shape", "brick");
   if (shape == "brick") {
     e.shape = Shape::Brick;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
@@ -123,7 +124,7 @@ const TensileSample& TensileRecorder::record(const Simulation& sim, const Energy
     std::string row;
     if (csv_->bytes() == 0) {
       row = "time_ns,strain,stress_MPa,force_left_pN,force_right_pN,grip_work_zJ";
-      for (const std::string& c : columns_) row += "," + (c.empty() ? std::string("total") : c) + "_zJ";
+      for (const std::string& c : columns_) row += "," + csvField((c.empty() ? std::string("total") : c) + "_zJ");
       row += ",contact_pairs,aligned_pairs,bundles,mean_bundle_elements,largest_bundle_elements,order_parameter,axis_alignment\n";
     }
     row += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", s.time, s.strain, s.stress, s.forceLeft,

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 
 namespace mesochain::mdem {
 
@@ -17,7 +18,7 @@ TomlTable::TomlTable(const toml::value& value, std::string source, std::string p
 std::string TomlTable::where(const std::string& key) const {
   const std::string full = path_.empty() ? key : path_ + "." + key;
   std::string w = "key " + full;
-  if (has(key)) w += " (line " + std::to_string(value_->at(key).location().line()) + ")";
+  if (has(key)) w += " (" + tomlWhere(value_->at(key)) + ")";
   return w;
 }
 

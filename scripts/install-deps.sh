@@ -2,13 +2,16 @@
 # Installs, with apt-get, the Debian packages mesochain needs to build and test.
 # Only packages that are missing are installed; run as root on Debian 12 (bookworm).
 set -euo pipefail
+# --program-only: what the program needs (scripts/demo.sh), without the test-only packages.
 packages=(
   g++ cmake ninja-build pkg-config
   libeigen3-dev liblapack-dev libopenblas-dev liblapacke-dev
-  libfftw3-dev libxc-dev libgtest-dev
+  libxc-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libpng-dev
 )
+test_packages=(libfftw3-dev libgtest-dev)  # tests only (scripts/test.sh)
+[ "${1:-}" = "--program-only" ] || packages+=("${test_packages[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

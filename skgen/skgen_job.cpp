@@ -1,5 +1,7 @@
 #include "skgen/skgen_job.hpp"
 
+#include "common/build_info.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -316,6 +318,7 @@ std::string atomicDataJson(const SkgenJob& job,
                            const std::vector<std::pair<std::string, const ElementBasis*>>& elements) {
   nlohmann::ordered_json root;
   root["code"] = "mesochain skgen";
+  root["program"] = buildInfoJson();
   root["input"] = job.source;
   root["functional"] = xcName(job.xc);
   root["hubbard_functional"] = xcName(job.hubbardXc);

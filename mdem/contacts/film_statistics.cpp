@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
 #include "mdem/contacts/element_pairs.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
@@ -136,6 +137,7 @@ void writeFilmStatisticsJson(const FilmStatistics& f, const std::string& path) {
     q["void_fraction_at_least_lower_edge"] = p.cumulative;
     j["pore_size_distribution"] = q;
   }
+  j["program"] = buildInfoJson();
   const std::filesystem::path target(path), tmp = target.string() + ".tmp";
   {
     std::ofstream out(tmp);

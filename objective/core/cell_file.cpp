@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <optional>
 
 #include <fmt/format.h>
@@ -30,6 +32,24 @@ using detail::TomlTable;
 
 std::string parameterSetsDirectory() { return MESOCHAIN_PARAMS_DIR; }
 
+std::vector<std::string> parameterSetSearchPath() {
+  std::vector<std::string> path;
+  if (const char* env = std::getenv("MESOCHAIN_PARAMS_PATH")) {
+    std::stringstream list(env);
+    for (std::string d; std::getline(list, d, ':');)
+      if (!d.empty()) path.push_back(d);
+  }
+  // An installed binary (cmake --install): PREFIX/bin/mesochain finds PREFIX/share/mesochain/params.
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && exe.has_parent_path()) {
+    const fs::path installed = (exe.parent_path() / ".." / "share" / "mesochain" / "params").lexically_normal();
+    if (fs::is_directory(installed, ec)) path.push_back(installed.string());
+  }
+  path.push_back(parameterSetsDirectory());
+  return path;
+}
+
 std::map<std::string, std::string> parameterSetFiles(const std::string& set,
                                                      const std::vector<std::string>& species,
                                                      const std::string& source,
@@ -38,27 +58,46 @@ std::map<std::string, std::string> parameterSetFiles(const std::string& set,
       !set.empty() && set != "." && set != ".." && std::all_of(set.begin(), set.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
       });
-  const fs::path dir = fs::path(parameterSetsDirectory()) / set;
+  const std::vector<std::string> search = parameterSetSearchPath();
   std::error_code ec;
-  if (!plainName || !fs::is_directory(dir, ec)) {
+  fs::path dir;
+  if (plainName)
+    for (const std::string& folder : search)
+      if (fs::is_directory(fs::path(folder) / set, ec)) {
+        dir = fs::path(folder) / set;
+        break;
+      }
+  if (dir.empty()) {
     std::vector<std::string> sets;
-    for (const auto& e : fs::directory_iterator(parameterSetsDirectory(), ec))
-      if (e.is_directory()) sets.push_back(e.path().filename().string());
+    for (const std::string& folder : search)
+      for (const auto& e : fs::directory_iterator(folder, ec))
+        if (e.is_directory() && std::find(sets.begin(), sets.end(), e.path().filename().string()) == sets.end())
+          sets.push_back(e.path().filename().string());
     std::sort(sets.begin(), sets.end());
-    std::string list;
+    std::string list, folders;
     for (const auto& s : sets) list += (list.empty() ? "" : ", ") + ("\"" + s + "\"");
+    for (const auto& f : search) folders += (folders.empty() ? "" : ":") + f;
     throw InputError(source, where, "set \"" + set + "\"",
-                     "the name of a parameter set in " + parameterSetsDirectory() + ": " +
+                     "the name of a parameter set in " + folders +
+                         " (MESOCHAIN_PARAMS_PATH, the installed params, the source tree's): " +
                          (list.empty() ? "(none installed)" : list));
   }
+  return tablesWithPrefix(dir.string() + "/", species, source, where, "set \"" + set + "\"");
+}
+
+std::map<std::string, std::string> tablesWithPrefix(const std::string& prefix,
+                                                    const std::vector<std::string>& species,
+                                                    const std::string& source, const std::string& where,
+                                                    const std::string& what) {
+  std::error_code ec;
   std::map<std::string, std::string> files;
   for (const auto& a : species)
     for (const auto& b : species) {
-      const fs::path f = dir / (a + "-" + b + ".skf");
+      const fs::path f = prefix + a + "-" + b + ".skf";
       if (!fs::is_regular_file(f, ec))
         throw InputError(source, where,
-                         fmt::format("no table for the pair {}-{} in set \"{}\" ({} is missing)", a,
-                                     b, set, f.string()),
+                         fmt::format("no table for the pair {}-{} in {} ({} is missing)", a, b, what,
+                                     f.string()),
                          "a set with a table for every ordered pair of the elements of the "
                          "cell, or an explicit \"" +
                              a + "-" + b + "\" = \"path\" entry");
@@ -80,26 +119,36 @@ void readParameters(const TomlTable& root, CellInput& in) {
     return std::find(species.begin(), species.end(), s) != species.end();
   };
   for (const std::string& key : t->keys()) {
-    if (key == "set" || key == "max_angular_momentum") continue;
+    if (key == "set" || key == "prefix" || key == "max_angular_momentum") continue;
     const auto dash = key.find('-');
     const bool pairKey = dash != std::string::npos && detail::isElementName(key.substr(0, dash)) &&
                          detail::isElementName(key.substr(dash + 1));
     if (!pairKey)
       t->fail(key, "an unknown key '" + key + "'",
-              "one of the keys of [parameters]: set, max_angular_momentum, or element pairs "
+              "one of the keys of [parameters]: set, prefix, max_angular_momentum, or element pairs "
               "such as \"C-H\" = \"path/C-H.skf\"");
     const std::string a = key.substr(0, dash), b = key.substr(dash + 1);
     if (!isSpecies(a) || !isSpecies(b))
       t->fail(key, "the pair " + key + " of an element that is not in the cell",
               "pairs of the elements of the cell only");
   }
+  const fs::path cellDir = fs::path(in.source).parent_path();
+  if (t->has("set") && t->has("prefix"))
+    t->fail("prefix", "both set and prefix", "one of them: set = \"NAME\" (a parameter set) or prefix = \"FOLDER/\"");
   if (t->has("set")) {
     in.parameterSet = t->string("set", "the name of a parameter set such as \"pbc-0-3\"");
     in.parameterFiles = parameterSetFiles(in.parameterSet, species, in.source, t->where("set"));
   }
-  const fs::path cellDir = fs::path(in.source).parent_path();
+  if (t->has("prefix")) {
+    // As DFTB+'s Type2FileNames Prefix: the tables are PREFIX + "A-B.skf", PREFIX relative to
+    // the cell file's folder ("skf/" names skf/C-C.skf; "skf/pbc-" names skf/pbc-C-C.skf).
+    const std::string prefix = t->string("prefix", "a path prefix of the tables such as \"skf/\"");
+    if (prefix.empty()) t->fail("prefix", "an empty prefix", "a path prefix such as \"skf/\"");
+    in.parameterFiles = tablesWithPrefix((cellDir / prefix).string(), species, in.source, t->where("prefix"),
+                                         "prefix \"" + prefix + "\"");
+  }
   for (const std::string& key : t->keys()) {
-    if (key == "set" || key == "max_angular_momentum") continue;
+    if (key == "set" || key == "prefix" || key == "max_angular_momentum") continue;
     const std::string file = t->string(key, "the path of the .skf table (a string)");
     std::error_code ec;
     fs::path p = cellDir / file;

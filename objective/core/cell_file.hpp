@@ -82,8 +82,18 @@ CellInput readCellFile(const std::string& path);
 // tables that differ from the set, dispersion and task.
 void writeCellFile(const std::string& path, const CellInput& input);
 
-// The directory of the parameter sets (the project's params/).
+// The directory of the parameter sets in the source tree (the project's params/).
 std::string parameterSetsDirectory();
+// Where `[parameters] set = "NAME"` is looked for, in order: the folders of the environment
+// variable MESOCHAIN_PARAMS_PATH (colon-separated), the installed sets beside the binary
+// (PREFIX/share/mesochain/params for PREFIX/bin/mesochain, when present), the source tree's.
+std::vector<std::string> parameterSetSearchPath();
+// "A-B" -> PREFIX + "A-B.skf" for every ordered pair; InputError(source, where) naming `what`
+// and the missing table otherwise.
+std::map<std::string, std::string> tablesWithPrefix(const std::string& prefix,
+                                                    const std::vector<std::string>& species,
+                                                    const std::string& source, const std::string& where,
+                                                    const std::string& what);
 // "A-B" -> params/<set>/A-B.skf for every ordered pair of `species`; InputError naming
 // `source` and `where` when the set or a table does not exist.
 std::map<std::string, std::string> parameterSetFiles(const std::string& set,

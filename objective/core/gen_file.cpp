@@ -47,6 +47,37 @@ double axialPeriod(const TextReader& r, const TextLine lines[3], const Eigen::Ve
   return std::abs(v[2].z());
 }
 
+// a and b of an S/F file only set the vacuum: mesochain's cell is periodic along z alone. When
+// the atoms' images along a, b, a+b or a-b would come closer than kMinimumVacuumGapAngstrom
+// (about twice the range of the Slater-Koster tables, 5.5 Å for pbc-0-3), DFTB+ would compute
+// a 2-D or 3-D crystal from the same file: refused rather than run silently as a 1-D chain.
+// The gap along a lateral vector L is |L| minus the atoms' extent along L (a lower bound of
+// the distance of an atom to the images of the others).
+constexpr double kMinimumVacuumGapAngstrom = 10.0;
+
+void requireVacuumLattice(const TextReader& r, const TextLine lines[3], const Eigen::Vector3d v[3],
+                          const Eigen::Matrix3Xd& positionsAngstrom) {
+  const Eigen::Vector3d lateral[4] = {v[0], v[1], v[0] + v[1], v[0] - v[1]};
+  const char* names[4] = {"a (lattice vector 1)", "b (lattice vector 2)", "a + b", "a - b"};
+  for (int k = 0; k < 4; ++k) {
+    const double length = lateral[k].norm();
+    if (!(length > 0)) continue;
+    const Eigen::Vector3d u = lateral[k] / length;
+    const Eigen::VectorXd along = u.transpose() * positionsAngstrom;
+    const double extent = along.size() ? along.maxCoeff() - along.minCoeff() : 0.0;
+    const double gap = length - extent;
+    if (gap < kMinimumVacuumGapAngstrom)
+      r.fail(lines[k < 2 ? k : 0],
+             fmt::format("periodic images along {} only {:.3g} Å apart (|{}| = {:.4g} Å, the atoms span "
+                         "{:.4g} Å along it): as DFTB+ reads this file it is a 2-D or 3-D periodic crystal",
+                         names[k], gap, names[k], length, extent),
+             fmt::format("lattice vectors a and b that leave at least {:.0f} Å of vacuum between the "
+                         "images (mesochain's cell is periodic along z only; a crystal is not an "
+                         "objective cell: use a cell file with its symmetry)",
+                         kMinimumVacuumGapAngstrom));
+  }
+}
+
 }  // namespace
 
 GenGeometry readGen(std::istream& in, const std::string& source) {
@@ -150,6 +181,7 @@ GenGeometry readGen(std::istream& in, const std::string& source) {
       cell.positions = lattice * cell.positions;
       origin = lattice * origin;
     }
+    requireVacuumLattice(r, lines, v, cell.positions);
     cell.positions = (cell.positions.colwise() - origin) * kAngstromInBohr;
     cell.symmetry = Symmetry::screw(period * kAngstromInBohr, 0.0, 1);
   }

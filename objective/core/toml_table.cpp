@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 
 namespace mesochain::objective::detail {
 
@@ -87,7 +88,7 @@ int TomlTable::line(const std::string& key) const {
 }
 
 std::string TomlTable::where(const std::string& key) const {
-  if (has(key)) return fmt::format("key {} (line {})", dotted(key), lineOf(at(key)));
+  if (has(key)) return fmt::format("key {} ({})", dotted(key), tomlWhere(at(key)));
   if (name_.empty()) return fmt::format("key {}", dotted(key));
   return fmt::format("key {} (table [{}] at line {})", dotted(key), name_, lineOf(*table_));
 }

@@ -247,8 +247,9 @@ void collectSettings(const std::string& prefix, const S& s,
     using T = std::decay_t<decltype(v)>;
     if constexpr (VisitedSettings<T>) {
       if (role == FieldRole::Result) collectSettings(prefix + name + ".", v, out);
-    } else if constexpr (std::is_invocable_v<T, int, double, double>) {
-      // a callback (progress): never a result setting
+    } else if constexpr (std::is_invocable_v<T, int, double, double> ||
+                         std::is_invocable_v<T, const ScanPoint&, int, int>) {
+      // a callback (progress, pointDone): never a result setting
     } else {
       if (role == FieldRole::Result) out[prefix + name] = valueText(v);
     }
@@ -457,6 +458,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
       if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
       bar.update(k + 1);
     }
+    if (s.pointDone && done.count(k)) s.pointDone(done.at(k), k, total);
     // Bend curvatures 1/R = 2 pi / (N_a T0) follow T0 of the relaxed reference.
     if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation(), bendSource);
   }

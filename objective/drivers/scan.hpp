@@ -45,6 +45,8 @@ const char* scanKindName(ScanKind kind);          // "stretch" | "twist" | "bend
 const char* deformationUnit(ScanKind kind);       // "strain" | "rad_per_cell" | "per_bohr"
 const char* bendDirectionName(BendDirection d);   // "soft" | "hard"
 
+struct ScanPoint;
+
 struct ScanSettings {
   ScanKind kind = ScanKind::Stretch;
   BendDirection direction = BendDirection::Soft;  // bend only
@@ -62,6 +64,10 @@ struct ScanSettings {
   bool resume = false;               // read checkpointPath (if it exists) and continue
   int stopAfter = -1;                // >= 0: return after computing this many new points
   bool progressBar = true;           // draw common/progress_bar on stderr (when a terminal)
+  // Called after each point of the list is computed or restored from the checkpoint, in the
+  // order of the plan (the reference, index 0, first), with the point's index and the plan size:
+  // the command line prints and flushes a table row per point (not only at the end).
+  std::function<void(const ScanPoint& point, int index, int total)> pointDone;
 };
 
 struct ScanPoint {

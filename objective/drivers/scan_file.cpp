@@ -54,7 +54,7 @@ std::string identityOf(const CellInput& cell) {
 
 }  // namespace
 
-ScanInput readScanFile(const std::string& path) {
+ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   ScanInput in;
   in.source = path;
   const toml::value data = parseTomlFile(path, "scan file");
@@ -165,12 +165,15 @@ ScanInput readScanFile(const std::string& path) {
   const auto o = root.table("output");
   if (!o) root.missing("output", "a table [output] with json = \"curve.json\" (and csv, checkpoint)");
   o->allowOnly({"json", "csv", "checkpoint", "structures"});
-  in.jsonPath = relativeTo(path, o->string("json", "the path of the curve JSON"));
-  if (o->has("csv")) in.csvPath = relativeTo(path, o->string("csv", "the path of the curve CSV"));
+  const auto inOutputDir = [&outputDir](const std::string& p) {
+    return (fs::path(outputDir) / p).lexically_normal().string();
+  };
+  in.jsonPath = inOutputDir(o->string("json", "the path of the curve JSON"));
+  if (o->has("csv")) in.csvPath = inOutputDir(o->string("csv", "the path of the curve CSV"));
   if (o->has("checkpoint"))
-    s.checkpointPath = relativeTo(path, o->string("checkpoint", "the path of the checkpoint (JSON)"));
+    s.checkpointPath = inOutputDir(o->string("checkpoint", "the path of the checkpoint (JSON)"));
   if (o->has("structures"))
-    in.structurePrefix = relativeTo(path, o->string("structures", "a path prefix for the relaxed cells"));
+    in.structurePrefix = inOutputDir(o->string("structures", "a path prefix for the relaxed cells"));
   s.identity = identityOf(in.cell);
   return in;
 }

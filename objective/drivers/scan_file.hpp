@@ -20,7 +20,9 @@ struct ScanInput {
 };
 
 // Reads and validates the scan file and the cell file it names. InputError names the file
-// and key of the first problem.
-ScanInput readScanFile(const std::string& path);
+// and key of the first problem. The cell file is found relative to the scan file; the [output]
+// paths are relative to `outputDir` (the command line's -o; "" is the working folder), never to
+// the scan file's folder (docs/command-line.md: one output-folder convention).
+ScanInput readScanFile(const std::string& path, const std::string& outputDir = "");
 
 }  // namespace mesochain::objective

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "common/build_info.hpp"
 #include "common/atomic_file.hpp"
 #include "common/finite_output.hpp"
 #include "common/errors.hpp"
@@ -16,6 +17,7 @@ using nlohmann::json;
 json scanCurveJson(const ScanResult& r) {
   json j;
   j["format"] = 1;
+  j["program"] = buildInfoJson();
   j["kind"] = scanKindName(r.kind);
   if (r.kind == ScanKind::Bend) j["direction"] = bendDirectionName(r.direction);
   j["T0_bohr"] = r.translation0;
@@ -44,7 +46,18 @@ json scanCurveJson(const ScanResult& r) {
 
 std::string scanCurveCsv(const ScanResult& r) {
   const bool bend = r.kind == ScanKind::Bend;
-  std::string s =
+  // The header lines of the curve JSON as "# key = value" (beam/scan_table.hpp reads them, so
+  // `mesochain beam` takes this CSV as it takes the JSON).
+  std::string s = "# format = 1\n";
+  s += fmt::format("# program = {}\n", versionLine());
+  s += fmt::format("# kind = {}\n", scanKindName(r.kind));
+  if (bend) s += fmt::format("# direction = {}\n", bendDirectionName(r.direction));
+  s += fmt::format("# T0_bohr = {:.17g}\n", r.translation0);
+  s += fmt::format("# atoms_per_cell = {}\n", r.atomsPerCell * r.cellsPerSlice);
+  if (!std::isnan(r.thickness)) s += fmt::format("# thickness_bohr = {:.17g}\n", r.thickness);
+  if (!std::isnan(r.width)) s += fmt::format("# width_bohr = {:.17g}\n", r.width);
+  s += fmt::format("# deformation_unit = {}\n", deformationUnit(r.kind));
+  s +=
       "deformation,energy_hartree,converged,max_force_hartree_per_bohr,time_s,helical_kpoints,"
       "angular_points,evaluations";
   s += bend ? ",measured_curvature_per_bohr\n" : "\n";

@@ -58,8 +58,12 @@ TEST(ScanFile, ReadsTwistAndBendWithUnits) {
   EXPECT_DOUBLE_EQ(t.settings.values[1], -units::kDegree);
   EXPECT_DOUBLE_EQ(t.settings.relax.forceTolerance, 2e-5);
   EXPECT_FALSE(t.settings.relax.relaxTranslation);
-  EXPECT_EQ(t.jsonPath, kDir + "/out/t.json");
-  EXPECT_EQ(t.settings.checkpointPath, kDir + "/t.ckpt");
+  // Outputs go to the working folder (or -o), not beside the scan file.
+  EXPECT_EQ(t.jsonPath, "out/t.json");
+  EXPECT_EQ(t.settings.checkpointPath, "t.ckpt");
+  const ScanInput inFolder = readScanFile(kDir + "/twist.toml", "runs/a");
+  EXPECT_EQ(inFolder.jsonPath, "runs/a/out/t.json");
+  EXPECT_EQ(inFolder.settings.checkpointPath, "runs/a/t.ckpt");
   EXPECT_EQ(t.cell.cell.atomCount(), 2);
   const ScanInput b = readScanFile(write(
       "bend.toml",

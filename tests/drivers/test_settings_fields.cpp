@@ -60,6 +60,7 @@ void perturb(T& v) {
   else if constexpr (std::is_integral_v<T>) v = v + 1;
   else if constexpr (std::is_same_v<T, std::string>) v += "x";
   else if constexpr (std::is_invocable_v<T, int, double, double>) v = [](int, double, double) {};
+  else if constexpr (std::is_invocable_v<T, const ScanPoint&, int, int>) v = [](const ScanPoint&, int, int) {};
   else v.push_back(typename T::value_type{7});
 }
 

@@ -134,3 +134,22 @@ TEST(GenFile, ErrorsNameTheFileAndLine) {
   }
   EXPECT_THROW(readGenFile(kData + "does_not_exist.gen"), InputError);
 }
+
+// A 3-D periodic S file (graphite-like: a = 2.46 Å, b = 4.26 Å) read as an objective cell would
+// silently be a 1-D chain; it is refused naming the short vector. Vacuum of 10 Å or more is
+// accepted, in Cartesian and fractional files (the gap is measured on the atoms' extent).
+TEST(GenFile, ShortLateralVectorsAreRefused) {
+  const std::string atoms = "2 S\nC\n1 1 0 0 0\n2 1 1.42 0 0\n0 0 0\n";
+  const std::string crystal = genError(atoms + "2.46 0 0\n0 4.26 0\n0 0 6.7\n");
+  EXPECT_NE(crystal.find("bad.gen, line 6"), std::string::npos) << crystal;
+  EXPECT_NE(crystal.find("2-D or 3-D periodic crystal"), std::string::npos) << crystal;
+  // b alone short: named at its line.
+  const std::string slab = genError(atoms + "30 0 0\n0 4.26 0\n0 0 6.7\n");
+  EXPECT_NE(slab.find("bad.gen, line 7"), std::string::npos) << slab;
+  EXPECT_NE(slab.find("b (lattice vector 2)"), std::string::npos) << slab;
+  // The atoms span 1.42 Å along x: |a| = 11.3 leaves 9.88 Å (refused), 11.5 leaves 10.08 Å.
+  EXPECT_NE(genError(atoms + "11.3 0 0\n0 20 0\n0 0 6.7\n"), "");
+  EXPECT_EQ(genError(atoms + "11.5 0 0\n0 20 0\n0 0 6.7\n"), "");
+  EXPECT_EQ(genError("2 F\nC\n1 1 0 0 0\n2 1 0.1 0 0\n0 0 0\n20 0 0\n0 20 0\n0 0 2.56\n"), "");
+  EXPECT_NE(genError("2 F\nC\n1 1 0 0 0\n2 1 0.6 0 0\n0 0 0\n20 0 0\n0 20 0\n0 0 2.56\n"), "");
+}
