@@ -8,6 +8,7 @@ packages=(
   libfftw3-dev libxc-dev libgtest-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libpng-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-ase
 )
 missing=()
 for p in "${packages[@]}"; do
