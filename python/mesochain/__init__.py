@@ -35,7 +35,7 @@ from ._mesochain import (  # noqa: F401
 __all__ = [
     "Calculator", "Cell", "CellInput", "InputError", "NumericalError", "QuadraticFit",
     "RelaxOutcome", "RelaxStep", "Result", "ScanInput", "ScanPoint", "ScanResult", "cell_input",
-    "fit_quadratic", "make_input", "read_cell", "read_scan", "read_structure", "relax", "run",
+    "document", "fit_quadratic", "make_input", "read_cell", "read_scan", "read_structure", "relax", "run",
     "run_scan", "scan", "units",
 ]
 
@@ -76,6 +76,25 @@ def make_input(symbols, positions, *, translation, twist, rotation_order=1, kpoi
         if table is not None:
             doc[name] = table
     return cell_input(doc, source)
+
+
+def document(input):
+    """The cell-file dict of a :class:`CellInput` (what ``input.write`` writes, read back with
+    tomllib): change a key and read it with :func:`cell_input` for a parameter study, e.g.
+    ``doc = mesochain.document(inp); doc["kpoints"]["helical"] = 32``. Inline atoms in Å,
+    tables as absolute paths."""
+    import os
+    import tempfile
+    import tomllib
+
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "cell.toml")
+        input.write(path)
+        with open(path, "rb") as f:
+            return tomllib.load(f)
+
+
+CellInput.document = document
 
 
 def run(input, progress=None):

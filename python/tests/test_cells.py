@@ -127,3 +127,18 @@ def test_structure_files_and_cell_copies(tmp_path):
     back = mc.read_structure(str(path))
     np.testing.assert_allclose(back.positions, cell.positions, atol=1e-12)
     assert len(cell.unrolled(0, 2)) == 3 * 5 * 2
+
+
+def test_document_of_an_input_reads_back_and_edits():
+    inp = mc.read_cell(str(CELL_DATA / "inline_ring.toml"))
+    doc = inp.document()
+    back = mc.cell_input(doc)
+    np.testing.assert_allclose(back.cell.positions, inp.cell.positions, rtol=0, atol=1e-14)
+    assert (back.parameter_files, back.max_angular_momentum, back.dispersion, back.task) == \
+        (inp.parameter_files, inp.max_angular_momentum, inp.dispersion, inp.task)
+    assert back.electronic_temperature == pytest.approx(inp.electronic_temperature, rel=1e-15)
+    doc["electrons"]["temperature"] = 500
+    doc["task"] = {"type": "energy"}  # a relax task would need its keys removed by hand in a template
+    hot = mc.cell_input(doc)
+    assert hot.electronic_temperature == pytest.approx(500 * U.BOLTZMANN_HARTREE_PER_KELVIN, rel=1e-15)
+    assert hot.task["type"] == "energy"
