@@ -28,7 +28,7 @@ from . import _mesochain as _m
 
 SYMMETRY_KEYS = ("mesochain:translation", "mesochain:twist", "mesochain:rotation_order")
 SETTINGS_SECTIONS = ("kpoints", "electrons", "parameters", "dispersion", "scc")
-SOURCE = "<atoms.info>"
+SOURCE = "<atoms.info>"  # errors found in atoms.info before the cell reader; "<ase.Atoms>" after
 
 _EV_PER_ANGSTROM = _m.units.HARTREE_IN_EV * _m.units.ANGSTROM_IN_BOHR
 
@@ -184,8 +184,7 @@ class MesochainCalculator(Calculator):
     def calculate(self, atoms=None, properties=("energy",), system_changes=all_changes):
         super().calculate(atoms, properties, system_changes)
         doc = self.document(self.atoms)
-        source = "<atoms.info>" if self._settings is None else "<ase.Atoms>"
-        inp = _m.cell_input(doc, source)
+        inp = _m.cell_input(doc, "<ase.Atoms>")
         key = repr((tuple(inp.cell.symbols), sorted((k, repr(v)) for k, v in doc.items()
                                                      if k in SETTINGS_SECTIONS)))
         calc = self._calculators.get(key)

@@ -71,6 +71,9 @@ ObjectiveCell withSymmetry(const ObjectiveCell& c, std::optional<double> transla
   if ((t == 0.0) != s.isRing())
     throw InputError(kPythonSource, "argument translation", std::to_string(t) + " Bohr",
                      s.isRing() ? "0 (the cell is a closed ring)" : "a translation > 0 (the cell is a screw)");
+  if (s.isRing() && twist)
+    throw InputError(kPythonSource, "argument twist", "a twist for a closed ring",
+                     "no twist: a ring's rotation is 2 pi / N_a (change rotation_order instead)");
   if (!s.isRing()) out.symmetry = Symmetry::fromParameters(t, g, s.rotationOrder(), kPythonSource.c_str());
   out.validate(kPythonSource, kMinimumDistance);
   return out;

@@ -96,7 +96,7 @@ def test_settings_and_symmetry_errors_name_the_key():
     atoms.calc = MesochainCalculator()
     with pytest.raises(mc.InputError) as err:
         atoms.get_potential_energy()
-    assert err.value.where == "key kpoints.helical"
+    assert err.value.source == "<ase.Atoms>" and err.value.where == "key kpoints.helical"
     atoms = atoms_from_cell(inp.cell)  # symmetry only: no settings
     atoms.calc = MesochainCalculator()
     with pytest.raises(mc.InputError, match="atoms.info: found no settings keys"):

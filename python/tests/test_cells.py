@@ -127,6 +127,11 @@ def test_structure_files_and_cell_copies(tmp_path):
     back = mc.read_structure(str(path))
     np.testing.assert_allclose(back.positions, cell.positions, atol=1e-12)
     assert len(cell.unrolled(0, 2)) == 3 * 5 * 2
+    ring = mc.read_cell(str(CELL_DATA / "inline_ring.toml")).cell
+    with pytest.raises(mc.InputError, match="argument twist"):
+        ring.with_symmetry(twist=0.1)
+    with pytest.raises(mc.InputError, match="argument translation"):
+        ring.with_symmetry(translation=1.0)
 
 
 def test_document_of_an_input_reads_back_and_edits():
