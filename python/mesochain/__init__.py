@@ -20,23 +20,26 @@ from ._mesochain import (  # noqa: F401
     ScanPoint,
     ScanResult,
     QuadraticFit,
+    Scene,
     cell_input,
     fit_quadratic,
     input_error,
+    load_scene,
     read_cell,
     read_scan,
     read_structure,
     relax,
     run_scan,
+    run_scene,
     scan,
     units,
 )
 
 __all__ = [
     "Calculator", "Cell", "CellInput", "InputError", "NumericalError", "QuadraticFit",
-    "RelaxOutcome", "RelaxStep", "Result", "ScanInput", "ScanPoint", "ScanResult", "cell_input",
-    "document", "fit_quadratic", "make_input", "read_cell", "read_scan", "read_structure", "relax", "run",
-    "run_scan", "scan", "units",
+    "RelaxOutcome", "RelaxStep", "Result", "ScanInput", "ScanPoint", "ScanResult", "Scene",
+    "cell_input", "document", "fit_quadratic", "load_scene", "make_input", "read_cell",
+    "read_scan", "read_structure", "relax", "run", "run_scan", "run_scene", "scan", "units",
 ]
 
 

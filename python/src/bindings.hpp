@@ -20,6 +20,8 @@ void bindCalculation(py::module_& m);
 void bindScan(py::module_& m);
 // fit_quadratic (the beam fitter).
 void bindBeamFit(py::module_& m);
+// Scene, load_scene, run_scene (mDEM).
+void bindDem(py::module_& m);
 
 // A Python dict (the cell-file layout) as a TOML document; a value of a type TOML cannot hold
 // is an InputError naming `source` and the dotted key.

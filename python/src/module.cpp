@@ -10,4 +10,5 @@ PYBIND11_MODULE(_mesochain, m) {
   mesochain::python::bindCalculation(m);
   mesochain::python::bindScan(m);
   mesochain::python::bindBeamFit(m);
+  mesochain::python::bindDem(m);
 }
