@@ -107,6 +107,17 @@ void bindCalculation(py::module_& m) {
             if (it == r.series.end()) return py::none();
             return py::array_t<double>(static_cast<py::ssize_t>(it->second.size()), it->second.data());
           }, "Mulliken charges per atom (e, positive = electron deficit) with SCC; None without")
+      .def_property_readonly("eigenvalues", [](const Result& r) -> py::object {
+            auto it = r.series.find("eigenvalues");
+            auto w = r.series.find("kpoint_weight");
+            if (it == r.series.end() || w == r.series.end() || w->second.empty()) return py::none();
+            const auto nk = static_cast<py::ssize_t>(w->second.size());
+            const auto norb = static_cast<py::ssize_t>(it->second.size()) / nk;
+            py::array_t<double> out({nk, norb});
+            std::copy(it->second.begin(), it->second.end(), out.mutable_data());
+            return out;
+          }, "(k-points, orbitals) levels in Hartree, ascending per k-point; the points are "
+             "kpoint_kappa (rad per screw step), kpoint_mu, kpoint_weight in `series`")
       .def("__repr__", [](const Result& r) {
         return "<mesochain.Result F = " + std::to_string(r.freeEnergy) + " Ha, " + std::to_string(r.atoms) + " atoms>";
       });

@@ -119,3 +119,22 @@ def test_run_follows_the_task_of_the_input():
     assert out.cell.translation != inp.cell.translation
     energy = mc.run(mc.cell_input(cnt55_document(helical=8)))
     assert isinstance(energy, mc.Result) and energy.gradient is None
+
+
+def test_eigenvalues_refill_to_the_band_energy_electrons_and_entropy(cnt55):
+    inp, calc = cnt55
+    r = calc.evaluate(inp.cell, forces=False, strain=False)
+    e, w = r.eigenvalues, r.series["kpoint_weight"]
+    assert e.shape == (len(w), int(r.extras["orbitals"])) and len(w) == int(r.extras["kpoints"])
+    assert np.all(np.diff(e, axis=1) >= 0)
+    assert w.sum() == pytest.approx(1.0, rel=1e-14)
+    assert set(r.series["kpoint_mu"]) <= set(range(inp.cell.rotation_order))
+    # Fermi-Dirac filling of the levels at the reported Fermi level, two electrons per level:
+    # the electron count, sum f e and -TS = 2 kT sum w [f ln f + (1 - f) ln(1 - f)].
+    kT, mu = inp.electronic_temperature, r.extras["fermi_level"]
+    f = 0.5 * (1.0 - np.tanh((e - mu) / (2 * kT)))  # 1 / (1 + exp((e - mu) / kT)), no overflow
+    assert 2 * (w[:, None] * f).sum() == pytest.approx(r.extras["electrons"], rel=1e-12)
+    assert 2 * (w[:, None] * f * e).sum() == pytest.approx(r.band_energy, rel=1e-12)
+    fc = np.clip(f, 1e-300, 1 - 1e-16)
+    ts = -2 * kT * (w[:, None] * (fc * np.log(fc) + (1 - fc) * np.log1p(-fc))).sum()
+    assert ts == pytest.approx(r.entropy_term, rel=1e-9)
