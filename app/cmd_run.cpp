@@ -78,10 +78,11 @@ void writeRelaxPlot(const std::string& path, const RelaxTrace& t, double toleran
   std::cerr << "wrote " << path << "\n";
 }
 
-void writeStructures(const std::string& prefix, const objective::ObjectiveCell& cell,
-                     const dftb::Result& r, long unroll) {
+void writeStructures(const std::string& prefix, const objective::CellInput& in,
+                     const objective::ObjectiveCell& cell, const dftb::Result& r, long unroll) {
   objective::XyzExtras extras;
   extras.energy = r.freeEnergy;
+  extras.settings = &in;  // the settings of the energy, for mesochain.ase (docs/python.md)
   Eigen::Matrix3Xd forces;
   if (r.gradient.size()) {
     forces = -r.gradient;
@@ -161,7 +162,7 @@ int runCell(const RunOptions& o) {
     writeFileAtomically(o.json, j.dump(2) + "\n");
     if (!isStandardOutput(o.json)) std::cerr << "wrote " << o.json << "\n";
   }
-  if (!prefix.empty()) writeStructures(prefix, cell, result, o.unroll);
+  if (!prefix.empty()) writeStructures(prefix, in, cell, result, o.unroll);
   if (relax && !relax->converged) {
     std::cerr << "mesochain: warning: relaxation did not converge within the step limit\n";
     return kNotConverged;

@@ -58,6 +58,20 @@ void reportBandSolution(const BandGeometry& geo, const BandSolution& sol, double
   out.extras["kpoints"] = nk;
   out.extras["orbitals"] = geo.layout.total;
   out.extras["image_pairs"] = static_cast<double>(geo.images.pairs().size());
+  // The levels per k-point (Hartree, ascending; k-point major, `orbitals` per point) and the
+  // points (kappa, mu, filling weight), for band output (the Python module's Result.eigenvalues).
+  std::vector<double> levels, kappa, mu, weight;
+  levels.reserve(static_cast<std::size_t>(nk) * static_cast<std::size_t>(geo.layout.total));
+  for (int k = 0; k < nk; ++k) {
+    levels.insert(levels.end(), sol.levels[k].data(), sol.levels[k].data() + sol.levels[k].size());
+    kappa.push_back(kpts[k].kappa);
+    mu.push_back(kpts[k].mu);
+    weight.push_back(sol.weights[k]);
+  }
+  out.series["eigenvalues"] = std::move(levels);
+  out.series["kpoint_kappa"] = std::move(kappa);
+  out.series["kpoint_mu"] = std::move(mu);
+  out.series["kpoint_weight"] = std::move(weight);
 }
 
 void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequest& request,

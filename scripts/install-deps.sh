@@ -9,6 +9,7 @@ packages=(
   libxc-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libpng-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-ase
 )
 test_packages=(libfftw3-dev libgtest-dev)  # tests only (scripts/test.sh)
 [ "${1:-}" = "--program-only" ] || packages+=("${test_packages[@]}")

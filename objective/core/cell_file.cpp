@@ -14,6 +14,7 @@
 #include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
+#include "objective/core/cell_document.hpp"
 #include "objective/core/cell_file_sections.hpp"
 #include "objective/core/text_reader.hpp"
 #include "objective/core/toml_table.hpp"
@@ -308,9 +309,14 @@ void readTask(const TomlTable& root, CellInput& in) {
 }  // namespace
 
 CellInput readCellFile(const std::string& path) {
+  return readCellDocument(parseTomlFile(path, "cell file"), path);
+}
+
+CellInput readCellDocument(const toml::value& data, const std::string& path) {
   CellInput in;
   in.source = path;
-  const toml::value data = parseTomlFile(path, "cell file");
+  if (!data.is_table())
+    throw InputError(path, "the document", detail::typeName(data), "a table of the cell-file sections");
   const TomlTable root(path, data, "");
   root.allowOnly({"format", "geometry", "builder", "symmetry", "kpoints", "electrons", "parameters",
                   "dispersion", "scc", "task"});

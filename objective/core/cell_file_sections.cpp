@@ -42,7 +42,7 @@ ObjectiveCell readInlineAtoms(const TomlTable& g) {
     const toml::value& e = list[k];
     auto bad = [&](const std::string& found) {
       throw InputError(
-          g.source(), fmt::format("key {}, atom {} (line {})", g.dotted("atoms"), k + 1, lineOf(e)),
+          g.source(), fmt::format("key {}, atom {}{}", g.dotted("atoms"), k + 1, lineSuffix(e)),
           found, "an atom [\"Element\", x, y, z] with x, y, z in " + unit);
     };
     if (!e.is_array() || e.as_array().size() != 4) bad(describe(e) + " (not 4 entries)");

@@ -57,7 +57,17 @@ std::optional<double> asNumber(const toml::value& v) {
   return std::nullopt;
 }
 
-int lineOf(const toml::value& v) { return static_cast<int>(v.location().line()); }
+// A value built in memory (not parsed from a file) has no line: toml11 reports line 1 of
+// "unknown file" for it.
+int lineOf(const toml::value& v) {
+  const toml::source_location loc = v.location();
+  return loc.file_name() == "unknown file" ? 0 : static_cast<int>(loc.line());
+}
+
+// " (line N)", " (set by --set ...)" for a value given on the command line, "" in memory.
+std::string lineSuffix(const toml::value& v) {
+  return lineOf(v) > 0 ? " (" + tomlWhere(v) + ")" : std::string();
+}
 
 TomlTable::TomlTable(std::string source, const toml::value& table, std::string name)
     : source_(std::move(source)), table_(&table), name_(std::move(name)) {}
@@ -88,8 +98,8 @@ int TomlTable::line(const std::string& key) const {
 }
 
 std::string TomlTable::where(const std::string& key) const {
-  if (has(key)) return fmt::format("key {} ({})", dotted(key), tomlWhere(at(key)));
-  if (name_.empty()) return fmt::format("key {}", dotted(key));
+  if (has(key)) return fmt::format("key {}{}", dotted(key), lineSuffix(at(key)));
+  if (name_.empty() || lineOf(*table_) == 0) return fmt::format("key {}", dotted(key));
   return fmt::format("key {} (table [{}] at line {})", dotted(key), name_, lineOf(*table_));
 }
 

@@ -49,7 +49,8 @@ std::string typeName(const toml::value& v);
 std::string describe(const toml::value& v);
 // A number (integer or float) or nullopt; non-finite numbers are returned as they are.
 std::optional<double> asNumber(const toml::value& v);
-// Line of a value (0 when unknown).
+// Line of a value (0 when unknown: a value built in memory); lineSuffix is " (line N)" or "".
 int lineOf(const toml::value& v);
+std::string lineSuffix(const toml::value& v);
 
 }  // namespace mesochain::objective::detail

@@ -14,6 +14,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/text_reader.hpp"
+#include "objective/core/xyz_settings.hpp"
 
 namespace mesochain::objective {
 
@@ -200,10 +201,12 @@ XyzFrame readXyz(std::istream& in, const std::string& source) {
   int found = 0;
   for (const auto& entry : kv) {
     const std::string& key = entry.first;  // (clang 14 cannot capture a structured binding)
+    if (isXyzSettingsKey(key)) continue;
     if (key.rfind("mesochain:", 0) == 0 &&
         std::find_if(keys, keys + 3, [&](const char* k) { return key == k; }) == keys + 3)
       r.fail(comment, "key '" + key + "'",
-             "mesochain:translation, mesochain:twist or mesochain:rotation_order");
+             "mesochain:translation, mesochain:twist, mesochain:rotation_order or a settings "
+             "key mesochain:<kpoints|electrons|parameters|dispersion|scc>.<key>");
     if (key.rfind("mesochain:", 0) == 0) ++found;
   }
   if (found > 0 && found < 3)
@@ -273,6 +276,7 @@ void writeXyz(std::ostream& out, const ObjectiveCell& cell, const XyzExtras& ext
       " mesochain:translation={} mesochain:twist={} "
       "mesochain:rotation_order={}",
       s.translation() * kBohrInAngstrom, twist, s.rotationOrder());
+  if (extras.settings) out << xyzSettingsKeys(*extras.settings);
   if (extras.energy) out << fmt::format(" energy={}", *extras.energy * units::kHartreeInEv);
   out << " pbc=\"F F F\"\n";
   writeAtoms(out, cell, Eigen::Vector3d::Zero(), extras.forces);

@@ -1,0 +1,81 @@
+#include "objective/core/xyz_settings.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/units.hpp"
+
+namespace mesochain::objective {
+
+namespace {
+
+const char* flag(bool b) { return b ? "T" : "F"; }
+
+// A value as one token: quoted when it holds a blank, refused when it holds a quote (the
+// comment-line syntax has no escapes).
+std::string token(const std::string& value, const std::string& key, const std::string& source) {
+  if (value.find('"') != std::string::npos || value.find('\n') != std::string::npos)
+    throw InputError(source, "the extended XYZ key mesochain:" + key, "a quote or line break in the value",
+                     "a value that fits on an extended XYZ comment line");
+  if (value.empty() || value.find_first_of(" \t=") != std::string::npos) return "\"" + value + "\"";
+  return value;
+}
+
+}  // namespace
+
+std::string xyzSettingsKeys(const CellInput& in) {
+  std::string out;
+  auto add = [&out, &in](const std::string& key, const std::string& value) {
+    out += " mesochain:" + key + "=" + token(value, key, in.source);
+  };
+  auto real = [](double x) { return fmt::format("{}", x); };
+  if (!in.cell.symmetry.isRing()) add("kpoints.helical", std::to_string(in.helicalKPoints));
+  add("kpoints.angular", in.angular.samples > 0 ? std::to_string(in.angular.samples) : "all");
+  add("electrons.temperature", real(in.electronicTemperature / units::kBoltzmannHartreePerKelvin));
+  std::map<std::string, std::string> fromSet;
+  if (!in.parameterSet.empty()) {
+    add("parameters.set", in.parameterSet);
+    fromSet = parameterSetFiles(in.parameterSet, in.cell.speciesNames, in.source, "[parameters] set");
+  }
+  for (const auto& [pair, file] : in.parameterFiles) {
+    auto it = fromSet.find(pair);
+    if (it != fromSet.end() && it->second == file) continue;
+    add("parameters." + pair, std::filesystem::absolute(file).lexically_normal().string());
+  }
+  for (const auto& [el, l] : in.maxAngularMomentum)
+    add("parameters.max_angular_momentum." + el, std::string(1, "spdf"[l]));
+  const DispersionInput& d = in.dispersion;
+  add("dispersion.model", d.model);
+  if (d.model == "lj") {
+    add("dispersion.epsilon", real(d.epsilon * units::kHartreeInKcalPerMol));
+    add("dispersion.r0", real(d.r0 * units::kBohrInAngstrom));
+    add("dispersion.cutoff", real(d.cutoff * units::kBohrInAngstrom));
+    add("dispersion.summation", d.summation);
+    if (d.summation == "ewald") add("dispersion.ewald_tolerance", real(d.ewaldTolerance));
+  }
+  const SccInput& s = in.scc;
+  add("scc.enabled", flag(s.enabled));
+  if (s.enabled) {
+    add("scc.charge_tolerance", real(s.chargeTolerance));
+    add("scc.energy_tolerance", real(s.energyTolerance));
+    add("scc.max_iterations", std::to_string(s.maxIterations));
+    add("scc.mixer", s.mixer);
+    add("scc.mixing", real(s.mixing));
+    add("scc.ewald_tolerance", real(s.ewaldTolerance));
+    add("scc.stop_if_unconverged", flag(s.stopIfUnconverged));
+    add("scc.warm_start", flag(s.warmStart));
+  }
+  return out;
+}
+
+bool isXyzSettingsKey(const std::string& key) {
+  for (const char* section : {"kpoints.", "electrons.", "parameters.", "dispersion.", "scc."}) {
+    const std::string prefix = std::string("mesochain:") + section;
+    if (key.size() > prefix.size() && key.compare(0, prefix.size(), prefix) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace mesochain::objective
