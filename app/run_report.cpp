@@ -54,21 +54,13 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
                   {"reduced_points", static_cast<int>(extra(r, "kpoints"))}};
   j["electronic_temperature_kelvin"] =
       input.electronicTemperature / units::kBoltzmannHartreePerKelvin;
-  j["energies_hartree"] = {
-      {"band", perCellAndAtom(r.bandEnergy, n)},
-      {"entropy_term_ts", perCellAndAtom(r.entropyTerm, n)},
-      {"repulsive", perCellAndAtom(r.repulsive, n)},
-      {"dispersion", perCellAndAtom(r.dispersion, n)},
-      {"scc", perCellAndAtom(r.scc, n)},
-      {"total", perCellAndAtom(r.totalEnergy, n)},
-      {"mermin_free", perCellAndAtom(r.freeEnergy, n)},
-      {"extrapolated_zero_temperature", perCellAndAtom(r.extrapolatedEnergy, n)}};
-  if (r.extras.count("dispersion_tail_estimate"))
-    j["energies_hartree"]["dispersion_tail_estimate"] =
-        perCellAndAtom(r.extras.at("dispersion_tail_estimate"), n);
-  if (r.extras.count("angular_sampling_error_estimate"))
-    j["energies_hartree"]["angular_sampling_error_estimate"] =
-        perCellAndAtom(r.extras.at("angular_sampling_error_estimate"), n);
+  // Every entry the terms reported (dftb/energy_ledger.hpp), then the totals.
+  json energies;
+  for (const dftb::LedgerEntry& e : r.energies.entries()) energies[e.name] = perCellAndAtom(e.value, n);
+  energies["total"] = perCellAndAtom(r.totalEnergy, n);
+  energies["mermin_free"] = perCellAndAtom(r.freeEnergy, n);
+  energies["extrapolated_zero_temperature"] = perCellAndAtom(r.extrapolatedEnergy, n);
+  j["energies_hartree"] = energies;
   j["electrons_per_cell"] = extra(r, "electrons");
   j["fermi_level_hartree"] = extra(r, "fermi_level");
   const double homo = extra(r, "homo"), lumo = extra(r, "lumo");
@@ -76,8 +68,6 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
   j["lumo_hartree"] = std::isfinite(lumo) ? json(lumo) : json(nullptr);
   j["gap_hartree"] = std::isfinite(homo) && std::isfinite(lumo) ? json(lumo - homo) : json(nullptr);
   if (input.scc.enabled) {
-    j["energies_hartree"]["h0"] = perCellAndAtom(extra(r, "h0_energy"), n);
-    j["energies_hartree"]["scc_coulomb"] = perCellAndAtom(extra(r, "scc_energy"), n);
     json history = json::array();
     const auto& he = r.series.at("scc_history_energy");
     const auto& hr = r.series.at("scc_history_residual");
@@ -142,11 +132,10 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
   auto row = [&](const char* name, double v) {
     out << fmt::format("{:<34}{:>20.10f}{:>20.10f}\n", name, v, v / n);
   };
-  row("band", r.bandEnergy);
-  row("repulsive", r.repulsive);
-  if (input.dispersion.model != "none") row("dispersion", r.dispersion);
-  if (input.scc.enabled) row("SCC (double counting + Coulomb)", r.scc);
-  row("-TS", -r.entropyTerm);
+  // The ledger's Energy entries in the terms' order, then -TS.
+  for (const dftb::LedgerEntry& e : r.energies.entries())
+    if (e.kind == dftb::EnergyKind::Energy) row(e.label.c_str(), e.value);
+  row("-TS", -r.energies.entropy());
   row("total", r.totalEnergy);
   row("Mermin free energy", r.freeEnergy);
   row("extrapolated to T = 0", r.extrapolatedEnergy);

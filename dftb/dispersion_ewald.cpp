@@ -1,6 +1,7 @@
 #include "dftb/dispersion_ewald.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace mesochain::dftb {
 
@@ -32,21 +33,27 @@ EwaldDispersionTerm::EwaldDispersionTerm(const UffLennardJones& lj, double toler
 
 void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
                                    const EvaluationRequest& request, TermOutput& out) const {
-  shortTerm_.evaluate(cell, request, out);
+  TermOutput shortPart;
+  shortTerm_.evaluate(cell, request, shortPart);
+  double energy = shortPart.energies["dispersion_short"];
+  out.gradient = std::move(shortPart.gradient);
+  out.dEdTranslation = shortPart.dEdTranslation;
+  out.dEdTwist = shortPart.dEdTwist;
   const int n = cell.atomCount();
   const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortRange_->c6());
   ewald::LatticeSumPlan used;  // the plan the sum ran with, reported without planning again
   if (request.gradient || request.strain) {
     const auto d = sum_.derivatives(cell, w, &used);
-    out.energy += d.energy;
+    energy += d.energy;
     if (request.gradient) out.gradient += d.gradient;
     if (request.strain && !cell.symmetry.isRing()) {
       out.dEdTranslation += d.dTranslation;
       out.dEdTwist += d.dTwist;
     }
   } else {
-    out.energy += 0.5 * w.cwiseProduct(sum_.matrix(cell, &used)).sum();
+    energy += 0.5 * w.cwiseProduct(sum_.matrix(cell, &used)).sum();
   }
+  out.energies.add("dispersion", EnergyKind::Energy, energy);
   out.extras["dispersion_ewald_splitting"] = used.splitting;
 }
 

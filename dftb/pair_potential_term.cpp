@@ -11,13 +11,13 @@ void PairPotentialTerm::evaluate(const objective::ObjectiveCell& cell,
                                  const EvaluationRequest& request, TermOutput& out) const {
   const objective::ImageList images(cell, cutoff_);
   const auto& sym = cell.symmetry;
-  out.energy = 0.0;
+  double energy = 0.0;
   if (request.gradient) out.gradient = Eigen::Matrix3Xd::Zero(3, cell.atomCount());
   out.dEdTranslation = out.dEdTwist = 0.0;
   for (const auto& q : images.pairs()) {
     double v = 0.0, dv = 0.0;
     potential_(cell.species[q.i], cell.species[q.j]).evaluate(q.r, v, dv);
-    out.energy += 0.5 * v;
+    energy += 0.5 * v;
     if (!request.gradient && !request.strain) continue;
     // dE/dd for this ordered pair; each unordered pair appears twice, hence 1/2.
     const Eigen::Vector3d u = (0.5 * dv / q.r) * q.d;
@@ -32,6 +32,7 @@ void PairPotentialTerm::evaluate(const objective::ObjectiveCell& cell,
           u.dot(zeta * objective::rotationZDerivative(sym.angle(q.g)) * cell.positions.col(q.j));
     }
   }
+  out.energies.add(name_, EnergyKind::Energy, energy);
 }
 
 }  // namespace mesochain::dftb

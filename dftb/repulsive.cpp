@@ -4,6 +4,9 @@
 #include <cmath>
 #include <utility>
 
+#include "dftb/pair_potential_term.hpp"
+#include "dftb/term_registry.hpp"
+
 namespace mesochain::dftb {
 
 SplineRepulsive::SplineRepulsive(SplineRepulsiveData data) : data_(std::move(data)) {}
@@ -51,5 +54,19 @@ void PolynomialRepulsive::evaluate(double r, double& value, double& derivative) 
   value = p * x * x;
   derivative = -(dp * x * x + 2.0 * p * x);
 }
+
+// The repulsive term: the tables' pair potentials summed over the image pairs (always built).
+MESOCHAIN_DFTB_TERM(TermRegistration{
+    "repulsive", 200, "pair repulsive potentials of the Slater-Koster tables", false,
+    [](const CalculatorSettings&) { return true; },
+    [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
+      const ParameterSet* p = b.params.get();
+      return std::make_unique<PairPotentialTerm>(
+          "repulsive",
+          [params = b.params, p](int a, int c) -> const RadialPotential& {
+            return p->repulsive(a, c);
+          },
+          p->repulsiveCutoff());
+    }})
 
 }  // namespace mesochain::dftb

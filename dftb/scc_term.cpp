@@ -13,6 +13,8 @@
 #include "dftb/bloch.hpp"
 #include "dftb/charge_mixer.hpp"
 #include "dftb/mulliken.hpp"
+#include "dftb/calculator.hpp"
+#include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
 
@@ -50,27 +52,31 @@ std::string historyTable(const std::vector<double>& energy, const std::vector<do
 }
 }  // namespace
 
+void validate(const SccSettings& scc) {
+  const std::string src = "the calculator settings";
+  // Mulliken populations carry rounding errors of a few 1e-15 per electron; a tolerance below
+  // 1e-13 electrons cannot be certified in double precision.
+  if (!(scc.chargeTolerance >= 1e-13))
+    throw InputError(src, "scc.charge_tolerance", std::to_string(scc.chargeTolerance),
+                     "at least 1e-13 electrons (tighter cannot be resolved in double precision)");
+  if (!(scc.energyTolerance >= 1e-13))
+    throw InputError(src, "scc.energy_tolerance_Ha", std::to_string(scc.energyTolerance),
+                     "at least 1e-13 Hartree (tighter cannot be resolved in double precision)");
+  if (scc.maxIterations < 1)
+    throw InputError(src, "scc.max_iterations", std::to_string(scc.maxIterations),
+                     "a positive count");
+  if (!(scc.ewaldTolerance >= 1e-13 && scc.ewaldTolerance <= 1e-2))
+    throw InputError(src, "scc.ewald_tolerance", fmt("%.3g", scc.ewaldTolerance),
+                     "a tolerance in [1e-13, 1e-2]");
+  makeChargeMixer(scc.mixer, scc.mixing);  // validates the mixer name and mixing
+}
+
 SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> params,
                                            BandSettings band, SccSettings scc,
                                            std::shared_ptr<ChargeCache> cache)
     : params_(std::move(params)), band_(band), scc_(std::move(scc)), cache_(std::move(cache)) {
-  requireElectronicTemperature(band_.electronicTemperature, "the calculator settings",
-                               "band.electronic_temperature_hartree");
-  // Mulliken populations carry rounding errors of a few 1e-15 per electron; a tolerance below
-  // 1e-13 electrons cannot be certified in double precision.
-  if (!(scc_.chargeTolerance >= 1e-13))
-    throw InputError("<scc>", "scc.charge_tolerance", std::to_string(scc_.chargeTolerance),
-                     "at least 1e-13 electrons (tighter cannot be resolved in double precision)");
-  if (!(scc_.energyTolerance >= 1e-13))
-    throw InputError("<scc>", "scc.energy_tolerance_Ha", std::to_string(scc_.energyTolerance),
-                     "at least 1e-13 Hartree (tighter cannot be resolved in double precision)");
-  if (scc_.maxIterations < 1)
-    throw InputError("<scc>", "scc.max_iterations", std::to_string(scc_.maxIterations),
-                     "a positive count");
-  if (!(scc_.ewaldTolerance >= 1e-13 && scc_.ewaldTolerance <= 1e-2))
-    throw InputError("<scc>", "scc.ewald_tolerance", fmt("%.3g", scc_.ewaldTolerance),
-                     "a tolerance in [1e-13, 1e-2]");
-  makeChargeMixer(scc_.mixer, scc_.mixing);  // validates the mixer name and mixing
+  validate(band_);
+  validate(scc_);
   coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
   shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),
                                                      scc_.ewaldTolerance * 1e-2);
@@ -167,10 +173,12 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     cache_->recordLoop(iterations);
     if (converged && scc_.warmStart) cache_->store(cell.species, dqOut);
   }
-  out.energy = energy;
   reportBandSolution(geo, sol, kT, out);
-  out.extras["h0_energy"] = h0Energy;
-  out.extras["scc_energy"] = sccEnergy;
+  out.energies.add("scc", EnergyKind::Energy,
+                   energy - (sol.filling.bandEnergy - sol.filling.entropyTerm),
+                   "SCC (double counting + Coulomb)");
+  out.energies.add("h0", EnergyKind::Reported, h0Energy, "H0 energy Tr(rho H0)");
+  out.energies.add("scc_coulomb", EnergyKind::Reported, sccEnergy, "SCC Coulomb 1/2 dq gamma dq");
   out.extras["scc_iterations"] = iterations;
   out.extras["scc_converged"] = converged ? 1.0 : 0.0;
   out.extras["scc_warm_start"] = warm ? 1.0 : 0.0;
@@ -203,5 +211,14 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
   out.dEdTranslation = d.dEdTranslation + lr.dTranslation - sr.dTranslation;
   out.dEdTwist = d.dEdTwist + lr.dTwist - sr.dTwist;
 }
+
+MESOCHAIN_DFTB_TERM(TermRegistration{
+    "scc_band", 100,
+    "self-consistent-charge (DFTB2) band structure: the band term iterated with the gamma~ shift",
+    true, [](const CalculatorSettings& s) { return s.scc.enabled; },
+    [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
+      return std::make_unique<SccBandStructureTerm>(b.params, b.settings.band, b.settings.scc,
+                                                    b.chargeCache);
+    }})
 
 }  // namespace mesochain::dftb

@@ -9,10 +9,13 @@
 //
 // Energy per cell (DFTB+ convention; the double counting of the shift is removed):
 //   F = [sum_k w_k sum_n f e - sum_i V_in,i q_i] - TS + 1/2 sum_ij dq_i gamma~_ij dq_j,
-// the bracket being Tr(rho H0) of the output density. evaluate() reports it as `energy`, with
-// extras band_energy (sum f e with the shifted H), entropy_term, h0_energy, scc_energy,
-// scc_iterations, scc_converged, and series mulliken_populations / mulliken_charges (q0 - q,
-// elementary charges) and the iteration history (scc_history_energy, scc_history_residual).
+// the bracket being Tr(rho H0) of the output density. Registered as "scc_band" (scc_term.cpp),
+// built instead of "band" when SCC is enabled. evaluate() reports into the ledger "band" (sum f e
+// with the shifted H), "entropy_term_ts", "scc" (F - band + TS: the double counting
+// -sum_i V_i q_i plus the Coulomb energy), and, Reported beside them, "h0" (Tr(rho H0)) and
+// "scc_coulomb" (1/2 dq gamma~ dq); extras scc_iterations, scc_converged, and series
+// mulliken_populations / mulliken_charges (q0 - q, elementary charges) and the iteration
+// history (scc_history_energy, scc_history_residual).
 //
 // Gradient (at self-consistency): P:dH0 - W:dS + 1/2 (V_i + V_j) P:dS + 1/2 dq (dgamma~) dq,
 // the middle terms through contractDerivatives with W' = W - 1/2 (V_i + V_j) P.
@@ -48,12 +51,17 @@ struct SccSettings {
   bool warmStart = true;           // start from the cached charges of the last converged loop
 };
 
+// InputError (source "the calculator settings", key scc.*) for tolerances below what double
+// precision resolves, a non-positive iteration count, an Ewald tolerance outside
+// [1e-13, 1e-2], or an unknown mixer / mixing.
+void validate(const SccSettings& settings);
+
 class SccBandStructureTerm : public EnergyTerm {
  public:
   // cache: where converged charges are kept between evaluations (may be null: no warm start).
   SccBandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings band,
                        SccSettings scc, std::shared_ptr<ChargeCache> cache = nullptr);
-  std::string name() const override { return "band"; }
+  std::string name() const override { return "scc_band"; }
   void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
                 TermOutput& out) const override;
 

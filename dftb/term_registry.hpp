@@ -1,0 +1,63 @@
+#pragma once
+// dftb energy terms register themselves (in the spirit of LAMMPS's BondStyle(name, Class) and
+// tblite's container list): the file that implements a term also registers it with its name,
+// its place in the evaluation order, whether it needs the SCC charges, when the calculator
+// settings ask for it, and a factory, through MESOCHAIN_DFTB_TERM. The calculator builds, in
+// order, every registered term the settings want and sums whatever they report into its
+// energy ledger; nothing else in the calculator lists terms.
+//
+// Order: 100 the electronic (band-structure) terms, 200 pair potentials of the tables
+// (repulsive), 300 empirical corrections (dispersion).
+//
+// The dftb library is linked whole (dftb/CMakeLists.txt), so every registration in it is kept.
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dftb/energy_term.hpp"
+
+namespace mesochain::dftb {
+
+class ParameterSet;
+class ChargeCache;
+struct CalculatorSettings;
+
+// What a factory is given.
+struct TermBuild {
+  std::shared_ptr<const ParameterSet> params;
+  const CalculatorSettings& settings;
+  // Converged SCC charges kept between evaluations (terms that need the charges).
+  std::shared_ptr<ChargeCache> chargeCache;
+};
+
+struct TermRegistration {
+  std::string name;     // the term's name() (and its timing key time_<name>_total)
+  int order = 100;      // see above
+  std::string summary;  // one line, for messages and docs
+  // True for a term whose energy depends on the self-consistent Mulliken charges (it runs or
+  // needs the SCC loop); such a term owns the charge cache.
+  bool needsCharges = false;
+  // Whether `settings` ask for the term.
+  std::function<bool(const CalculatorSettings&)> wanted;
+  std::function<std::unique_ptr<EnergyTerm>(const TermBuild&)> make;
+};
+
+// Registers a term; returns true (for the static initialiser). Two terms of one name are a
+// programming error (std::logic_error at start-up).
+bool registerTerm(TermRegistration registration);
+// Every registered term, by order (then name).
+std::vector<const TermRegistration*> registeredTerms();
+const TermRegistration* findTerm(std::string_view name);
+
+}  // namespace mesochain::dftb
+
+#define MESOCHAIN_DFTB_CONCAT_(a, b) a##b
+#define MESOCHAIN_DFTB_CONCAT(a, b) MESOCHAIN_DFTB_CONCAT_(a, b)
+// MESOCHAIN_DFTB_TERM(TermRegistration{...}) at namespace scope in the term's .cpp.
+#define MESOCHAIN_DFTB_TERM(...)                                                    \
+  namespace {                                                                       \
+  [[maybe_unused]] const bool MESOCHAIN_DFTB_CONCAT(dftbTermRegistered_, __LINE__) = \
+      ::mesochain::dftb::registerTerm(__VA_ARGS__);                                 \
+  }
