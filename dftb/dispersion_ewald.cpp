@@ -25,10 +25,7 @@ ewald::LatticeSumSettings settingsFor(double tolerance) {
 }  // namespace
 
 EwaldDispersionTerm::EwaldDispersionTerm(const UffLennardJones& lj, double tolerance)
-    : shortRange_(std::make_shared<LjShortRange>(lj)),
-      shortTerm_("dispersion_short",
-                 [p = shortRange_.get()](int, int) -> const RadialPotential& { return *p; },
-                 lj.cutoff()),
+    : shortTerm_("dispersion_short", SamePotentialEvaluator<LjShortRange>{LjShortRange(lj)}),
       sum_(ewald::Kernel::InverseSixth, settingsFor(tolerance)) {}
 
 void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
@@ -40,7 +37,7 @@ void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
   out.dEdTranslation = shortPart.dEdTranslation;
   out.dEdTwist = shortPart.dEdTwist;
   const int n = cell.atomCount();
-  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortRange_->c6());
+  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortTerm_.evaluator().potential.c6());
   ewald::LatticeSumPlan used;  // the plan the sum ran with, reported without planning again
   if (request.gradient || request.strain) {
     const auto d = sum_.derivatives(cell, w, &used);

@@ -5,7 +5,6 @@
 #include "common/errors.hpp"
 #include "dftb/calculator.hpp"
 #include "dftb/dispersion_ewald.hpp"
-#include "dftb/pair_potential_term.hpp"
 #include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
@@ -25,20 +24,19 @@ void validate(const DispersionSettings& d) {
                      "a tolerance in [1e-13, 1e-2]");
 }
 
-CutoffDispersionTerm::CutoffDispersionTerm(const UffLennardJones& lj) : lj_(lj) {}
+CutoffDispersionTerm::CutoffDispersionTerm(const UffLennardJones& lj)
+    : pairs_("dispersion", SamePotentialEvaluator<UffLennardJones>{lj}) {}
 
 void CutoffDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
                                     const EvaluationRequest& request, TermOutput& out) const {
-  const UffLennardJones* lj = &lj_;
-  const PairPotentialTerm pairs(
-      "dispersion", [lj](int, int) -> const RadialPotential& { return *lj; }, lj_.cutoff());
-  pairs.evaluate(cell, request, out);
+  pairs_.evaluate(cell, request, out);
   if (cell.symmetry.isRing()) return;
+  const UffLennardJones& lj = pairs_.evaluator().potential;
   const double lambda =
       cell.atomCount() * cell.symmetry.rotationOrder() / cell.symmetry.translation();
   out.energies.add("dispersion_tail_estimate", EnergyKind::Reported,
-                   -0.4 * cell.atomCount() * lambda * lj_.epsilon() * std::pow(lj_.r0(), 6) /
-                       std::pow(lj_.cutoff(), 5));
+                   -0.4 * cell.atomCount() * lambda * lj.epsilon() * std::pow(lj.r0(), 6) /
+                       std::pow(lj.cutoff(), 5));
 }
 
 MESOCHAIN_DFTB_TERM(TermRegistration{

@@ -9,6 +9,7 @@
 
 #include "dftb/dispersion_lj.hpp"
 #include "dftb/energy_term.hpp"
+#include "dftb/pair_potential_term.hpp"
 
 namespace mesochain::dftb {
 
@@ -37,7 +38,7 @@ class CutoffDispersionTerm final : public EnergyTerm {
                 TermOutput& out) const override;
 
  private:
-  UffLennardJones lj_;
+  PairTerm<SamePotentialEvaluator<UffLennardJones>> pairs_;
 };
 
 }  // namespace mesochain::dftb

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include "dftb/pair_potential_term.hpp"
@@ -56,17 +57,21 @@ void PolynomialRepulsive::evaluate(double r, double& value, double& derivative) 
 }
 
 // The repulsive term: the tables' pair potentials summed over the image pairs (always built).
+namespace {
+struct TableRepulsive {
+  std::shared_ptr<const ParameterSet> params;
+  double cutoff() const { return params->repulsiveCutoff(); }
+  void operator()(int si, int sj, double r, double& v, double& dv) const {
+    params->repulsive(si, sj).evaluate(r, v, dv);
+  }
+};
+}  // namespace
+
 MESOCHAIN_DFTB_TERM(TermRegistration{
     "repulsive", 200, "pair repulsive potentials of the Slater-Koster tables", false,
     [](const CalculatorSettings&) { return true; },
     [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
-      const ParameterSet* p = b.params.get();
-      return std::make_unique<PairPotentialTerm>(
-          "repulsive",
-          [params = b.params, p](int a, int c) -> const RadialPotential& {
-            return p->repulsive(a, c);
-          },
-          p->repulsiveCutoff());
+      return std::make_unique<PairTerm<TableRepulsive>>("repulsive", TableRepulsive{b.params});
     }})
 
 }  // namespace mesochain::dftb

@@ -21,8 +21,10 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "dftb/charge_cache.hpp"
+#include "dftb/dispersion_lj.hpp"
 #include "dftb/pair_potential_term.hpp"
 #include "dftb/term_registry.hpp"
 #include "scc_support.hpp"
@@ -56,10 +58,8 @@ MESOCHAIN_DFTB_TERM(TermRegistration{
     "test_soft_pair", 900, "test only: soft cubic pair repulsion", false,
     [](const CalculatorSettings&) { return softPairWanted; },
     [](const TermBuild&) -> std::unique_ptr<EnergyTerm> {
-      static const SoftCube cube;
-      return std::make_unique<PairPotentialTerm>(
-          "test_soft_pair", [](int, int) -> const RadialPotential& { return cube; },
-          SoftCube::kCutoff);
+      return std::make_unique<PairTerm<SamePotentialEvaluator<SoftCube>>>(
+          "test_soft_pair", SamePotentialEvaluator<SoftCube>{SoftCube()});
     }})
 
 struct TermCase {
@@ -282,6 +282,27 @@ TEST(DftbTermRegistry, CalculatorSumsTheEnergyOfEveryBuiltTerm) {
     if (entry.kind == EnergyKind::Energy) sum += entry.value;
   EXPECT_EQ(r.totalEnergy, sum);
   EXPECT_EQ(r.freeEnergy, sum - r.energies.at("entropy_term_ts"));
+}
+
+// The pair kernel's threaded path (above kParallelPairs pairs) sums the same pairs as the
+// serial one: equal to rounding, whatever the thread count.
+TEST(DftbPairKernel, ThreadedSumEqualsTheSerialSum) {
+  const ObjectiveCell cell = distorted(testing::armchairHelical(4), 0.06);
+  const UffLennardJones lj(0.069 * units::kKcalPerMolInHartree, 3.80 * units::kAngstromInBohr, 800.0);
+  ASSERT_GT(objective::ImageList(cell, lj.cutoff()).pairs().size(), 2 * kParallelPairs);
+  const PairTerm<SamePotentialEvaluator<UffLennardJones>> term("lj", {lj});
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const TermOutput serial = evaluate(term, cell, true);
+  omp_set_num_threads(3);
+  const TermOutput threaded = evaluate(term, cell, true);
+  omp_set_num_threads(before);
+  const double e = serial.energies.at("lj");
+  EXPECT_NEAR(threaded.energies.at("lj"), e, 1e-13 * std::abs(e));
+  EXPECT_LT((threaded.gradient - serial.gradient).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_NEAR(threaded.dEdTranslation, serial.dEdTranslation, 1e-13);
+  EXPECT_NEAR(threaded.dEdTwist, serial.dEdTwist, 1e-13);
+  EXPECT_GT(serial.gradient.cwiseAbs().maxCoeff(), 1e-6);
 }
 
 }  // namespace
