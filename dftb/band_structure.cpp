@@ -93,11 +93,18 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   out.extras["time_forces"] = std::chrono::duration<double>(Clock::now() - t4).count();
 }
 
+// The band term is always built; with charge interactions (SCC) it is the self-consistent one.
 MESOCHAIN_DFTB_TERM(TermRegistration{
-    "band", 100, "non-SCC band structure: Mermin free energy of the helical k-point filling",
-    false, [](const CalculatorSettings& s) { return !s.scc.enabled; },
+    "band", 100,
+    "band structure: Mermin free energy of the helical k-point filling (self-consistent with "
+    "the charge interactions when there are any)",
+    false, [](const CalculatorSettings&) { return true; },
     [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
-      return std::make_unique<BandStructureTerm>(b.params, b.settings.band);
-    }})
+      if (b.chargeInteractions.empty())
+        return std::make_unique<BandStructureTerm>(b.params, b.settings.band);
+      return std::make_unique<SccBandStructureTerm>(b.params, b.settings.band, b.settings.scc,
+                                                    b.chargeInteractions, b.chargeCache);
+    },
+    nullptr})
 
 }  // namespace mesochain::dftb

@@ -15,16 +15,26 @@ namespace mesochain::dftb {
 
 Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings)
     : params_(std::move(params)), settings_(settings) {
-  const TermBuild build{params_, settings_, chargeCache_};
+  // Charge interactions first: the band term's factory decides on SCC by whether there are any.
+  TermBuild build{params_, settings_, chargeCache_, {}};
   for (const TermRegistration* t : registeredTerms())
-    if (t->wanted(settings_)) terms_.push_back(t->make(build));
+    if (t->needsCharges && t->wanted(settings_)) {
+      build.chargeInteractions.push_back(t->makeInteraction(build));
+      names_.push_back(t->name);
+    }
+  for (const TermRegistration* t : registeredTerms())
+    if (!t->needsCharges && t->wanted(settings_)) {
+      terms_.push_back(t->make(build));
+      names_.push_back(t->name);
+    }
+  // In registration order.
+  std::vector<std::string> ordered;
+  for (const TermRegistration* t : registeredTerms())
+    for (const std::string& n : names_)
+      if (n == t->name) ordered.push_back(n);
+  names_ = std::move(ordered);
 }
 
-std::vector<std::string> Calculator::termNames() const {
-  std::vector<std::string> names;
-  for (const auto& t : terms_) names.push_back(t->name());
-  return names;
-}
 
 namespace {
 // The band term holds at least three complex N_o x N_o matrices (Hamiltonian, overlap,

@@ -2,7 +2,8 @@
 // dftb::Calculator: the energy terms a cell's settings ask for, evaluated on an objective cell.
 // Terms register themselves (dftb/term_registry.hpp); the calculator builds, in registration
 // order, every term whose wanted() holds for its settings (band structure and repulsive always,
-// dispersion when enabled, the SCC band term instead of the plain one with SCC), and sums what
+// dispersion when enabled, the SCC charge interaction that makes the band term self-consistent
+// when enabled), and sums what
 // they report: energies into one ledger (dftb/energy_ledger.hpp), gradients and strain
 // derivatives into one total. A term that is not asked for has no object and costs nothing.
 // With SCC, the calculator keeps the last converged charges (ChargeCache) to warm-start the next
@@ -51,7 +52,8 @@ class Calculator {
   Result evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request) const;
   const CalculatorSettings& settings() const { return settings_; }
   const ParameterSet& parameters() const { return *params_; }
-  std::vector<std::string> termNames() const;
+  // The registrations built (energy terms and charge interactions), in registration order.
+  const std::vector<std::string>& termNames() const { return names_; }
   // Converged SCC charges kept between evaluations for the warm start (SccSettings::warmStart);
   // clear() it to make the next evaluation start from neutral atoms.
   ChargeCache& chargeCache() const { return *chargeCache_; }
@@ -60,6 +62,7 @@ class Calculator {
   std::shared_ptr<const ParameterSet> params_;
   CalculatorSettings settings_;
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
+  std::vector<std::string> names_;
   std::shared_ptr<ChargeCache> chargeCache_ = std::make_shared<ChargeCache>();
 };
 

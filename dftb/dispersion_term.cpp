@@ -48,6 +48,7 @@ MESOCHAIN_DFTB_TERM(TermRegistration{
       const UffLennardJones lj(d.epsilon, d.r0, d.cutoff);
       if (d.ewald) return std::make_unique<EwaldDispersionTerm>(lj, d.ewaldTolerance);
       return std::make_unique<CutoffDispersionTerm>(lj);
-    }})
+    },
+    nullptr})
 
 }  // namespace mesochain::dftb

@@ -72,6 +72,7 @@ MESOCHAIN_DFTB_TERM(TermRegistration{
     [](const CalculatorSettings&) { return true; },
     [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
       return std::make_unique<PairTerm<TableRepulsive>>("repulsive", TableRepulsive{b.params});
-    }})
+    },
+    nullptr})
 
 }  // namespace mesochain::dftb

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "common/electronic_temperature.hpp"
@@ -13,8 +14,6 @@
 #include "dftb/bloch.hpp"
 #include "dftb/charge_mixer.hpp"
 #include "dftb/mulliken.hpp"
-#include "dftb/calculator.hpp"
-#include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
 
@@ -22,18 +21,6 @@ using objective::ObjectiveCell;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-std::vector<double> hubbardPerSpecies(const ParameterSet& params) {
-  std::vector<double> u;
-  for (int s = 0; s < params.speciesCount(); ++s) {
-    const SpeciesData& sp = params.species(s);
-    if (!(sp.hubbardU > 0.0))
-      throw InputError("<scc>", "Hubbard U of " + sp.name, std::to_string(sp.hubbardU),
-                       "a positive Hubbard U in " + sp.name + "-" + sp.name + ".skf for SCC");
-    u.push_back(sp.hubbardU);
-  }
-  return u;
-}
-
 template <class... Args>
 std::string fmt(const char* format, Args... args) {
   char buffer[512];
@@ -71,20 +58,24 @@ void validate(const SccSettings& scc) {
   makeChargeMixer(scc.mixer, scc.mixing);  // validates the mixer name and mixing
 }
 
-SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> params,
-                                           BandSettings band, SccSettings scc,
-                                           std::shared_ptr<ChargeCache> cache)
-    : params_(std::move(params)), band_(band), scc_(std::move(scc)), cache_(std::move(cache)) {
+SccBandStructureTerm::SccBandStructureTerm(
+    std::shared_ptr<const ParameterSet> params, BandSettings band, SccSettings scc,
+    std::vector<std::shared_ptr<const ChargeInteraction>> interactions,
+    std::shared_ptr<ChargeCache> cache)
+    : params_(std::move(params)),
+      band_(band),
+      scc_(std::move(scc)),
+      interactions_(std::move(interactions)),
+      cache_(std::move(cache)) {
   validate(band_);
   validate(scc_);
-  coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
-  shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),
-                                                     scc_.ewaldTolerance * 1e-2);
+  if (interactions_.empty())
+    throw std::logic_error("SccBandStructureTerm built without a charge interaction");
 }
 
 Eigen::MatrixXd SccBandStructureTerm::gammaMatrix(const ObjectiveCell& cell) const {
-  Eigen::MatrixXd g = coulomb_->matrix(cell) - shortRange_->matrix(cell);
-  for (int a = 0; a < cell.atomCount(); ++a) g(a, a) += params_->species(cell.species[a]).hubbardU;
+  Eigen::MatrixXd g = interactions_.front()->kernel(cell);
+  for (std::size_t k = 1; k < interactions_.size(); ++k) g += interactions_[k]->kernel(cell);
   return g;
 }
 
@@ -205,20 +196,15 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
   const BandDerivatives d =
       contractDerivatives(cell, params, geo.images, sol.p, wShifted, request.strain);
   const Eigen::MatrixXd weights = dqOut * dqOut.transpose();
-  const LatticeSumDerivatives lr = coulomb_->derivatives(cell, weights);
-  const LatticeSumDerivatives sr = shortRange_->derivatives(cell, weights);
-  if (request.gradient) out.gradient = d.gradient + lr.gradient - sr.gradient;
-  out.dEdTranslation = d.dEdTranslation + lr.dTranslation - sr.dTranslation;
-  out.dEdTwist = d.dEdTwist + lr.dTwist - sr.dTwist;
+  if (request.gradient) out.gradient = d.gradient;
+  out.dEdTranslation = d.dEdTranslation;
+  out.dEdTwist = d.dEdTwist;
+  for (const auto& interaction : interactions_) {
+    const ImagePairSum c = interaction->derivatives(cell, weights);
+    if (request.gradient) out.gradient += c.gradient;
+    out.dEdTranslation += c.dTranslation;
+    out.dEdTwist += c.dTwist;
+  }
 }
-
-MESOCHAIN_DFTB_TERM(TermRegistration{
-    "scc_band", 100,
-    "self-consistent-charge (DFTB2) band structure: the band term iterated with the gamma~ shift",
-    true, [](const CalculatorSettings& s) { return s.scc.enabled; },
-    [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
-      return std::make_unique<SccBandStructureTerm>(b.params, b.settings.band, b.settings.scc,
-                                                    b.chargeCache);
-    }})
 
 }  // namespace mesochain::dftb

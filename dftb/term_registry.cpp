@@ -16,8 +16,10 @@ std::vector<TermRegistration>& registry() {
 bool registerTerm(TermRegistration r) {
   for (const TermRegistration& o : registry())
     if (o.name == r.name) throw std::logic_error("dftb term '" + r.name + "' registered twice");
-  if (!r.wanted || !r.make)
-    throw std::logic_error("dftb term '" + r.name + "' registered without wanted() or make()");
+  if (!r.wanted || (r.needsCharges ? !r.makeInteraction || r.make : !r.make || r.makeInteraction))
+    throw std::logic_error("dftb term '" + r.name + "' registered without wanted(), or without "
+                           "exactly the factory of its kind (make, or makeInteraction when it "
+                           "needs the charges)");
   registry().push_back(std::move(r));
   return true;
 }

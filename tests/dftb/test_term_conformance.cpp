@@ -1,7 +1,8 @@
 // One conformance suite for every registered dftb energy term (in the spirit of LAMMPS's one
 // YAML per style and a single runner): each registered term has at least one case below (a
 // test fails for a registered term without one), and every case is checked by the same body,
-// on the term alone (built by its registration's factory):
+// on the term alone (built by its registration's factory; a charge interaction through the band
+// term it makes self-consistent):
 //  * gradient: dF/dx of every cell atom against central finite differences of the term's
 //    free energy (ledger Energy entries minus TS);
 //  * strain: dF/dT and dF/dgamma against central finite differences of the screw parameters;
@@ -60,7 +61,8 @@ MESOCHAIN_DFTB_TERM(TermRegistration{
     [](const TermBuild&) -> std::unique_ptr<EnergyTerm> {
       return std::make_unique<PairTerm<SamePotentialEvaluator<SoftCube>>>(
           "test_soft_pair", SamePotentialEvaluator<SoftCube>{SoftCube()});
-    }})
+    },
+    nullptr})
 
 struct TermCase {
   std::string term;  // registration name
@@ -105,7 +107,8 @@ std::vector<TermCase> cases() {
   c.push_back({"band", "distorted (5,0) tube, 8 kappa, 800 K", carbon, carbonSettings(8, 800.0),
                zigzag, 2e-7, 2});
   auto scc = testing::sccSettings(2000.0, 16);
-  c.push_back({"scc_band", "helical CH chain, 16 kappa, 2000 K", testing::chParameters(), scc,
+  // A charge interaction is checked through the band term it makes self-consistent.
+  c.push_back({"scc", "helical CH chain, 16 kappa, 2000 K", testing::chParameters(), scc,
                testing::helicalChUnit(), 5e-8, 2});
   c.push_back({"repulsive", "distorted (5,0) tube", carbon, carbonSettings(1, 800.0), zigzag,
                1e-8, 3});
@@ -121,7 +124,10 @@ std::vector<TermCase> cases() {
 std::unique_ptr<EnergyTerm> build(const TermCase& tc, const CalculatorSettings& settings) {
   const TermRegistration* r = findTerm(tc.term);
   if (!r) throw std::logic_error("no registered term " + tc.term);
-  return r->make(TermBuild{tc.params, settings, std::make_shared<ChargeCache>()});
+  TermBuild b{tc.params, settings, std::make_shared<ChargeCache>(), {}};
+  if (!r->needsCharges) return r->make(b);
+  b.chargeInteractions.push_back(r->makeInteraction(b));
+  return findTerm("band")->make(b);
 }
 
 TermOutput evaluate(const EnergyTerm& term, const ObjectiveCell& cell, bool derivatives) {
@@ -251,9 +257,9 @@ TEST(DftbTermRegistry, CalculatorBuildsTheWantedTermsInOrder) {
   EXPECT_EQ(Calculator(carbon, withDispersion(carbonSettings(1, 800.0), true)).termNames(),
             (Names{"band", "repulsive", "dispersion"}));
   EXPECT_EQ(Calculator(testing::chParameters(), testing::sccSettings(300.0)).termNames(),
-            (Names{"scc_band", "repulsive"}));
+            (Names{"band", "scc", "repulsive"}));
   for (const TermRegistration* r : registeredTerms())
-    EXPECT_EQ(r->needsCharges, r->name == "scc_band") << r->name;
+    EXPECT_EQ(r->needsCharges, r->name == "scc") << r->name;
 }
 
 // A term the calculator has never heard of: its energy is in the total and the free energy,
@@ -268,7 +274,7 @@ TEST(DftbTermRegistry, CalculatorSumsTheEnergyOfEveryBuiltTerm) {
   softPairWanted = false;
   const Result r = withTerm.evaluate(cell, {true, true});
   TermOutput alone;
-  findTerm("test_soft_pair")->make(TermBuild{carbon, s, nullptr})->evaluate(cell, {true, true}, alone);
+  findTerm("test_soft_pair")->make(TermBuild{carbon, s, nullptr, {}})->evaluate(cell, {true, true}, alone);
   const double e = alone.energies.at("test_soft_pair");
   ASSERT_GT(e, 1e-3);
   EXPECT_EQ(r.energies.at("test_soft_pair"), e);
