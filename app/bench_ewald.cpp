@@ -164,7 +164,7 @@ void splittingScan(const BenchOptions& opt) {
 double energyOf(const dftb::EnergyTerm& t, const objective::ObjectiveCell& c) {
   dftb::TermOutput out;
   t.evaluate(c, {}, out);
-  return out.energy;
+  return out.energies.free();
 }
 
 void dispersion(const BenchOptions& opt, std::vector<Curve>& curves) {

@@ -57,21 +57,13 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
                   {"reduced_points", static_cast<int>(extra(r, "kpoints"))}};
   j["electronic_temperature_kelvin"] =
       input.electronicTemperature / units::kBoltzmannHartreePerKelvin;
-  j["energies_hartree"] = {
-      {"band", perCellAndAtom(r.bandEnergy, n)},
-      {"entropy_term_ts", perCellAndAtom(r.entropyTerm, n)},
-      {"repulsive", perCellAndAtom(r.repulsive, n)},
-      {"dispersion", perCellAndAtom(r.dispersion, n)},
-      {"scc", perCellAndAtom(r.scc, n)},
-      {"total", perCellAndAtom(r.totalEnergy, n)},
-      {"mermin_free", perCellAndAtom(r.freeEnergy, n)},
-      {"extrapolated_zero_temperature", perCellAndAtom(r.extrapolatedEnergy, n)}};
-  if (r.extras.count("dispersion_tail_estimate"))
-    j["energies_hartree"]["dispersion_tail_estimate"] =
-        perCellAndAtom(r.extras.at("dispersion_tail_estimate"), n);
-  if (r.extras.count("angular_sampling_error_estimate"))
-    j["energies_hartree"]["angular_sampling_error_estimate"] =
-        perCellAndAtom(r.extras.at("angular_sampling_error_estimate"), n);
+  // Every entry the terms reported (dftb/energy_ledger.hpp), then the totals.
+  json energies;
+  for (const dftb::LedgerEntry& e : r.energies.entries()) energies[e.name] = perCellAndAtom(e.value, n);
+  energies["total"] = perCellAndAtom(r.totalEnergy, n);
+  energies["mermin_free"] = perCellAndAtom(r.freeEnergy, n);
+  energies["extrapolated_zero_temperature"] = perCellAndAtom(r.extrapolatedEnergy, n);
+  j["energies_hartree"] = energies;
   j["electrons_per_cell"] = extra(r, "electrons");
   j["fermi_level_hartree"] = extra(r, "fermi_level");
   const double homo = extra(r, "homo"), lumo = extra(r, "lumo");
@@ -79,8 +71,6 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
   j["lumo_hartree"] = std::isfinite(lumo) ? json(lumo) : json(nullptr);
   j["gap_hartree"] = std::isfinite(homo) && std::isfinite(lumo) ? json(lumo - homo) : json(nullptr);
   if (input.scc.enabled) {
-    j["energies_hartree"]["h0"] = perCellAndAtom(extra(r, "h0_energy"), n);
-    j["energies_hartree"]["scc_coulomb"] = perCellAndAtom(extra(r, "scc_energy"), n);
     json history = json::array();
     const auto& he = r.series.at("scc_history_energy");
     const auto& hr = r.series.at("scc_history_residual");
@@ -148,11 +138,10 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
     const double ev = v * units::kHartreeInEv;
     out << fmt::format("{:<34}{:>20.10f}{:>20.10f}{:>20.8f}{:>18.8f}\n", name, v, v / n, ev, ev / n);
   };
-  row("band", r.bandEnergy);
-  row("repulsive", r.repulsive);
-  if (input.dispersion.model != "none") row("dispersion", r.dispersion);
-  if (input.scc.enabled) row("SCC (double counting + Coulomb)", r.scc);
-  row("-TS", -r.entropyTerm);
+  // The ledger's Energy entries in the terms' order, then -TS.
+  for (const dftb::LedgerEntry& e : r.energies.entries())
+    if (e.kind == dftb::EnergyKind::Energy) row(e.label.c_str(), e.value);
+  row("-TS", -r.energies.entropy());
   row("total", r.totalEnergy);
   row("Mermin free energy", r.freeEnergy);
   row("extrapolated to T = 0", r.extrapolatedEnergy);

@@ -9,7 +9,9 @@
 #include "common/errors.hpp"
 #include "dftb/band_solver.hpp"
 #include "dftb/bloch.hpp"
+#include "dftb/calculator.hpp"
 #include "dftb/fermi.hpp"
+#include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
 
@@ -19,7 +21,11 @@ using Clock = std::chrono::steady_clock;
 BandStructureTerm::BandStructureTerm(std::shared_ptr<const ParameterSet> params,
                                      BandSettings settings)
     : params_(std::move(params)), settings_(settings) {
-  requireElectronicTemperature(settings_.electronicTemperature, "the calculator settings",
+  validate(settings_);
+}
+
+void validate(const BandSettings& settings) {
+  requireElectronicTemperature(settings.electronicTemperature, "the calculator settings",
                                "band.electronic_temperature_hartree");
 }
 
@@ -46,11 +52,12 @@ void reportBandSolution(const BandGeometry& geo, const BandSolution& sol, double
       const Filling f = fillFermiDirac(lv, wt, geo.electrons, kT);
       half[parity] = f.bandEnergy - f.entropyTerm;
     }
-    out.extras["angular_sampling_error_estimate"] = 0.5 * std::abs(half[0] - half[1]);
+    out.energies.add("angular_sampling_error_estimate", EnergyKind::Reported,
+                     0.5 * std::abs(half[0] - half[1]));
   }
   const Filling& filling = sol.filling;
-  out.extras["band_energy"] = filling.bandEnergy;
-  out.extras["entropy_term"] = filling.entropyTerm;
+  out.energies.add("band", EnergyKind::Energy, filling.bandEnergy);
+  out.energies.add("entropy_term_ts", EnergyKind::Entropy, filling.entropyTerm, "-TS");
   out.extras["fermi_level"] = filling.fermiLevel;
   out.extras["homo"] = filling.highestOccupied;
   out.extras["lumo"] = filling.lowestUnoccupied;
@@ -84,7 +91,6 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   const BandSolution sol = solveBands(cell, params, geo, geo.h0, Eigen::VectorXd(),
                                       settings_.electronicTemperature, wantDensity,
                                       settings_.eigenvectors);
-  out.energy = sol.filling.bandEnergy - sol.filling.entropyTerm;
   reportBandSolution(geo, sol, settings_.electronicTemperature, out);
   out.extras["time_setup"] = std::chrono::duration<double>(t1 - t0).count();
   out.extras["time_filling"] = sol.timeFilling;
@@ -100,5 +106,19 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   out.extras["time_density"] = sol.timeDensity;
   out.extras["time_forces"] = std::chrono::duration<double>(Clock::now() - t4).count();
 }
+
+// The band term is always built; with charge interactions (SCC) it is the self-consistent one.
+MESOCHAIN_DFTB_TERM(TermRegistration{
+    "band", 100,
+    "band structure: Mermin free energy of the helical k-point filling (self-consistent with "
+    "the charge interactions when there are any)",
+    false, [](const CalculatorSettings&) { return true; },
+    [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
+      if (b.chargeInteractions.empty())
+        return std::make_unique<BandStructureTerm>(b.params, b.settings.band);
+      return std::make_unique<SccBandStructureTerm>(b.params, b.settings.band, b.settings.scc,
+                                                    b.chargeInteractions, b.chargeCache);
+    },
+    nullptr})
 
 }  // namespace mesochain::dftb

@@ -3,9 +3,10 @@
 // k-points, Fermi-Dirac filling at one Fermi level across all k-points, and the Mermin free
 // energy  F_band = sum_k w_k sum_n f_nk e_nk - T S  (per cell).
 //
-// evaluate() reports as `energy` the band free energy (the quantity whose gradient is exact),
-// and as extras: band_energy, entropy_term (TS), fermi_level, homo, lumo, electrons,
-// kpoints, and timings (time_assembly, time_eigensolver, time_filling, time_density,
+// Registered as "band" (band_structure.cpp), built when SCC is off. evaluate() reports into the
+// ledger "band" (sum f e, Energy), "entropy_term_ts" (TS, Entropy) and, with sampled angular
+// momenta, "angular_sampling_error_estimate" (Reported); as extras: fermi_level, homo, lumo,
+// electrons, kpoints, and timings (time_assembly, time_eigensolver, time_filling, time_density,
 // time_forces, in seconds).
 #include <memory>
 
@@ -25,6 +26,10 @@ struct BandSettings {
   EigenvectorPath eigenvectors = EigenvectorPath::Automatic;
 };
 
+// InputError (source "the calculator settings", the key) for an electronic temperature outside
+// common/electronic_temperature.hpp's range (the k-grid checks its own counts).
+void validate(const BandSettings& settings);
+
 class BandStructureTerm : public EnergyTerm {
  public:
   BandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings settings);
@@ -40,8 +45,9 @@ class BandStructureTerm : public EnergyTerm {
 
 struct BandGeometry;
 struct BandSolution;
-// The extras every band term reports (band_energy, entropy_term, fermi_level, homo, lumo,
-// electrons, kpoints, orbitals, image_pairs, angular_sampling_error_estimate).
+// What every band term reports: ledger entries band, entropy_term_ts (and
+// angular_sampling_error_estimate with sampled mu) and extras fermi_level, homo, lumo,
+// electrons, kpoints, orbitals, image_pairs.
 void reportBandSolution(const BandGeometry& geometry, const BandSolution& solution, double kT,
                         TermOutput& out);
 

@@ -9,41 +9,32 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
-#include "dftb/dispersion_ewald.hpp"
-#include "dftb/dispersion_lj.hpp"
-#include "dftb/pair_potential_term.hpp"
+#include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
 
 Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings)
     : params_(std::move(params)), settings_(settings) {
-  if (settings_.scc.enabled)
-    terms_.push_back(std::make_unique<SccBandStructureTerm>(params_, settings_.band, settings_.scc,
-                                                            chargeCache_));
-  else
-    terms_.push_back(std::make_unique<BandStructureTerm>(params_, settings_.band));
-  const ParameterSet* p = params_.get();
-  terms_.push_back(std::make_unique<PairPotentialTerm>(
-      "repulsive", [p](int a, int b) -> const RadialPotential& { return p->repulsive(a, b); },
-      p->repulsiveCutoff()));
-  if (settings_.dispersion.enabled) {
-    const auto& d = settings_.dispersion;
-    lj_ = std::make_shared<UffLennardJones>(d.epsilon, d.r0, d.cutoff);
-    const RadialPotential* lj = lj_.get();
-    if (d.ewald)
-      terms_.push_back(std::make_unique<EwaldDispersionTerm>(
-          UffLennardJones(d.epsilon, d.r0, d.cutoff), d.ewaldTolerance));
-    else
-      terms_.push_back(std::make_unique<PairPotentialTerm>(
-          "dispersion", [lj](int, int) -> const RadialPotential& { return *lj; }, d.cutoff));
-  }
+  // Charge interactions first: the band term's factory decides on SCC by whether there are any.
+  TermBuild build{params_, settings_, chargeCache_, {}};
+  for (const TermRegistration* t : registeredTerms())
+    if (t->needsCharges && t->wanted(settings_)) {
+      build.chargeInteractions.push_back(t->makeInteraction(build));
+      names_.push_back(t->name);
+    }
+  for (const TermRegistration* t : registeredTerms())
+    if (!t->needsCharges && t->wanted(settings_)) {
+      terms_.push_back(t->make(build));
+      names_.push_back(t->name);
+    }
+  // In registration order.
+  std::vector<std::string> ordered;
+  for (const TermRegistration* t : registeredTerms())
+    for (const std::string& n : names_)
+      if (n == t->name) ordered.push_back(n);
+  names_ = std::move(ordered);
 }
 
-std::vector<std::string> Calculator::termNames() const {
-  std::vector<std::string> names;
-  for (const auto& t : terms_) names.push_back(t->name());
-  return names;
-}
 
 namespace {
 // The band term holds at least three complex N_o x N_o matrices (Hamiltonian, overlap,
@@ -87,43 +78,27 @@ Result Calculator::evaluate(const objective::ObjectiveCell& cell,
     if (request.gradient) r.gradient += out.gradient;
     r.dFdTranslation += out.dEdTranslation;
     r.dFdTwist += out.dEdTwist;
+    r.energies.merge(out.energies);
     for (const auto& [k, v] : out.extras) r.extras[k] = v;
     for (auto& [k, v] : out.series) r.series[k] = std::move(v);
-    if (term->name() == "band") {
-      r.bandEnergy = out.extras.at("band_energy");
-      r.entropyTerm = out.extras.at("entropy_term");
-      // The band term's energy is band - TS (+ the SCC double-counting terms).
-      r.scc = out.energy - (r.bandEnergy - r.entropyTerm);
-    } else if (term->name() == "repulsive") {
-      r.repulsive = out.energy;
-    } else if (term->name() == "dispersion") {
-      r.dispersion = out.energy;
-    }
   }
-  r.totalEnergy = r.bandEnergy + r.scc + r.repulsive + r.dispersion;
-  r.freeEnergy = r.totalEnergy - r.entropyTerm;
-  r.extrapolatedEnergy = r.totalEnergy - 0.5 * r.entropyTerm;
+  r.totalEnergy = r.energies.total();
+  r.freeEnergy = r.energies.free();
+  r.extrapolatedEnergy = r.energies.extrapolated();
   // A non-finite energy or force is never a result (it would be written as null, exit 0).
-  const std::pair<const char*, double> parts[] = {
-      {"band energy", r.bandEnergy}, {"entropy term", r.entropyTerm}, {"SCC energy", r.scc},
-      {"repulsive energy", r.repulsive}, {"dispersion energy", r.dispersion},
-      {"dF/dT", r.dFdTranslation}, {"dF/dtwist", r.dFdTwist}};
-  for (const auto& [name, value] : parts)
+  for (const LedgerEntry& e : r.energies.entries())
+    if (!std::isfinite(e.value))
+      throw NumericalError(fmt::format("the calculator gave a non-finite {} energy ({}) for a cell "
+                                       "of {} atoms", e.name, e.value, cell.atomCount()));
+  const std::pair<const char*, double> strain[] = {{"dF/dT", r.dFdTranslation},
+                                                   {"dF/dtwist", r.dFdTwist}};
+  for (const auto& [name, value] : strain)
     if (!std::isfinite(value))
       throw NumericalError(fmt::format("the calculator gave a non-finite {} ({}) for a cell of {} "
                                        "atoms", name, value, cell.atomCount()));
   if (r.gradient.size() && !r.gradient.allFinite())
     throw NumericalError(fmt::format("the calculator gave non-finite forces for a cell of {} atoms",
                                      cell.atomCount()));
-  if (settings_.dispersion.enabled && !settings_.dispersion.ewald && !cell.symmetry.isRing()) {
-    // Truncation estimate of the r^-6 tail beyond the cutoff for a line of atoms with density
-    // lambda = N_o N_a / T: E_tail = -(2/5) N_o lambda eps r0^6 / r_c^5 per cell.
-    const auto& d = settings_.dispersion;
-    const double lambda = cell.atomCount() * cell.symmetry.rotationOrder() /
-                          cell.symmetry.translation();
-    r.extras["dispersion_tail_estimate"] =
-        -0.4 * cell.atomCount() * lambda * d.epsilon * std::pow(d.r0, 6) / std::pow(d.cutoff, 5);
-  }
   return r;
 }
 

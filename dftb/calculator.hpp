@@ -1,45 +1,41 @@
 #pragma once
-// dftb::Calculator: the list of energy terms a cell asks for (band structure and repulsive
-// always; Lennard-Jones dispersion only when named), evaluated on an objective cell.
-// A term that is not asked for has no object and costs nothing. With SCC, the calculator keeps
-// the last converged charges (ChargeCache) to warm-start the next evaluation of the same atoms.
+// dftb::Calculator: the energy terms a cell's settings ask for, evaluated on an objective cell.
+// Terms register themselves (dftb/term_registry.hpp); the calculator builds, in registration
+// order, every term whose wanted() holds for its settings (band structure and repulsive always,
+// dispersion when enabled, the SCC charge interaction that makes the band term self-consistent
+// when enabled), and sums what
+// they report: energies into one ledger (dftb/energy_ledger.hpp), gradients and strain
+// derivatives into one total. A term that is not asked for has no object and costs nothing.
+// With SCC, the calculator keeps the last converged charges (ChargeCache) to warm-start the next
+// evaluation of the same atoms.
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "dftb/band_structure.hpp"
+#include "dftb/dispersion_term.hpp"
+#include "dftb/energy_ledger.hpp"
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
 #include "dftb/scc_term.hpp"
 
 namespace mesochain::dftb {
 
-struct DispersionSettings {
-  bool enabled = false;
-  double epsilon = 0.0;  // Hartree
-  double r0 = 0.0;       // Bohr, position of the pair minimum
-  double cutoff = 0.0;   // Bohr
-  // r^-6 tail: false = cut off at `cutoff`; true = helical Ewald sum to `ewaldTolerance`
-  // (dftb/dispersion_ewald.hpp).
-  bool ewald = false;
-  double ewaldTolerance = 1e-8;
-};
-
+// The settings of every term, each declared (with its defaults, units and validation) in its
+// term's header.
 struct CalculatorSettings {
-  BandSettings band;
-  DispersionSettings dispersion;
-  SccSettings scc;  // enabled: the band term is self-consistent (dftb/scc_term.hpp)
+  BandSettings band;              // dftb/band_structure.hpp
+  DispersionSettings dispersion;  // dftb/dispersion_term.hpp
+  SccSettings scc;  // dftb/scc_term.hpp; enabled: the band term is self-consistent
 };
 
 struct Result {
-  // Energies per cell, Hartree.
-  double bandEnergy = 0.0;       // sum f e
-  double entropyTerm = 0.0;      // T S
-  double repulsive = 0.0;
-  double dispersion = 0.0;
-  double scc = 0.0;              // SCC: -sum_i V_i q_i + 1/2 dq gamma dq (double counting)
-  double totalEnergy = 0.0;      // band + scc + repulsive + dispersion
+  // Energies per cell (Hartree) as the terms reported them: band, entropy_term_ts, repulsive,
+  // dispersion, scc, ... (see each term's header).
+  EnergyLedger energies;
+  // From the ledger:
+  double totalEnergy = 0.0;      // energies.total(): the sum of the Energy entries
   double freeEnergy = 0.0;       // total - TS (Mermin); forces are its negative gradient
   double extrapolatedEnergy = 0.0;  // total - TS/2, the T -> 0 estimate
   Eigen::Matrix3Xd gradient;     // dF/dx, Hartree/Bohr (empty unless requested)
@@ -56,7 +52,8 @@ class Calculator {
   Result evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request) const;
   const CalculatorSettings& settings() const { return settings_; }
   const ParameterSet& parameters() const { return *params_; }
-  std::vector<std::string> termNames() const;
+  // The registrations built (energy terms and charge interactions), in registration order.
+  const std::vector<std::string>& termNames() const { return names_; }
   // Converged SCC charges kept between evaluations for the warm start (SccSettings::warmStart);
   // clear() it to make the next evaluation start from neutral atoms.
   ChargeCache& chargeCache() const { return *chargeCache_; }
@@ -65,7 +62,7 @@ class Calculator {
   std::shared_ptr<const ParameterSet> params_;
   CalculatorSettings settings_;
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
-  std::shared_ptr<const RadialPotential> lj_;
+  std::vector<std::string> names_;
   std::shared_ptr<ChargeCache> chargeCache_ = std::make_shared<ChargeCache>();
 };
 

@@ -54,7 +54,12 @@ Eigen::MatrixXd HelicalEwaldCoulombSum::matrix(const objective::ObjectiveCell& c
 LatticeSumDerivatives HelicalEwaldCoulombSum::derivatives(const objective::ObjectiveCell& cell,
                                                           const Eigen::MatrixXd& weights) const {
   const auto d = impl_->sum.derivatives(cell, weights);
-  return {d.gradient, d.dTranslation, d.dTwist};
+  LatticeSumDerivatives out;
+  out.energy = d.energy;
+  out.gradient = d.gradient;
+  out.dTranslation = d.dTranslation;
+  out.dTwist = d.dTwist;
+  return out;
 }
 
 std::unique_ptr<CoulombLatticeSum> makeCoulombLatticeSum(double tolerance) {

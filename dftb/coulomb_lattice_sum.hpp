@@ -9,16 +9,13 @@
 
 #include <Eigen/Dense>
 
+#include "dftb/image_pair_sum.hpp"
 #include "objective/core/cell.hpp"
 
 namespace mesochain::dftb {
 
-// Derivatives of a weighted lattice sum 1/2 sum_ij w_ij Phi_ij.
-struct LatticeSumDerivatives {
-  Eigen::Matrix3Xd gradient;   // with respect to the cell atoms, 3 x N_o
-  double dTranslation = 0.0;   // with respect to the screw translation T
-  double dTwist = 0.0;         // with respect to the twist gamma
-};
+// Energy and derivatives of a weighted lattice sum 1/2 sum_ij w_ij Phi_ij.
+using LatticeSumDerivatives = ImagePairSum;
 
 class CoulombLatticeSum {
  public:

@@ -1,6 +1,7 @@
 #include "dftb/dispersion_ewald.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace mesochain::dftb {
 
@@ -24,29 +25,32 @@ ewald::LatticeSumSettings settingsFor(double tolerance) {
 }  // namespace
 
 EwaldDispersionTerm::EwaldDispersionTerm(const UffLennardJones& lj, double tolerance)
-    : shortRange_(std::make_shared<LjShortRange>(lj)),
-      shortTerm_("dispersion_short",
-                 [p = shortRange_.get()](int, int) -> const RadialPotential& { return *p; },
-                 lj.cutoff()),
+    : shortTerm_("dispersion_short", SamePotentialEvaluator<LjShortRange>{LjShortRange(lj)}),
       sum_(ewald::Kernel::InverseSixth, settingsFor(tolerance)) {}
 
 void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
                                    const EvaluationRequest& request, TermOutput& out) const {
-  shortTerm_.evaluate(cell, request, out);
+  TermOutput shortPart;
+  shortTerm_.evaluate(cell, request, shortPart);
+  double energy = shortPart.energies["dispersion_short"];
+  out.gradient = std::move(shortPart.gradient);
+  out.dEdTranslation = shortPart.dEdTranslation;
+  out.dEdTwist = shortPart.dEdTwist;
   const int n = cell.atomCount();
-  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortRange_->c6());
+  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortTerm_.evaluator().potential.c6());
   ewald::LatticeSumPlan used;  // the plan the sum ran with, reported without planning again
   if (request.gradient || request.strain) {
     const auto d = sum_.derivatives(cell, w, &used);
-    out.energy += d.energy;
+    energy += d.energy;
     if (request.gradient) out.gradient += d.gradient;
     if (request.strain && !cell.symmetry.isRing()) {
       out.dEdTranslation += d.dTranslation;
       out.dEdTwist += d.dTwist;
     }
   } else {
-    out.energy += 0.5 * w.cwiseProduct(sum_.matrix(cell, &used)).sum();
+    energy += 0.5 * w.cwiseProduct(sum_.matrix(cell, &used)).sum();
   }
+  out.energies.add("dispersion", EnergyKind::Energy, energy);
   out.extras["dispersion_ewald_splitting"] = used.splitting;
 }
 

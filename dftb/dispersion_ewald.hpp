@@ -35,8 +35,7 @@ class EwaldDispersionTerm final : public EnergyTerm {
                 TermOutput& out) const override;
 
  private:
-  std::shared_ptr<const LjShortRange> shortRange_;
-  PairPotentialTerm shortTerm_;
+  PairTerm<SamePotentialEvaluator<LjShortRange>> shortTerm_;
   ewald::HelicalLatticeSum sum_;
 };
 

@@ -1,14 +1,17 @@
 #pragma once
 // One interaction interface for every energy term of an objective cell (band structure,
-// repulsive, dispersion, later SCC Coulomb): the energy per cell, its gradient with respect to
-// the cell atoms, and its derivatives with respect to the screw translation T and twist gamma.
-// Parameters are immutable; per-geometry work happens inside evaluate().
+// repulsive, dispersion, SCC): the named energies per cell it reports into a ledger
+// (dftb/energy_ledger.hpp), their gradient with respect to the cell atoms, and their
+// derivatives with respect to the screw translation T and twist gamma. Parameters are
+// immutable; per-geometry work happens inside evaluate(). Terms register themselves
+// (dftb/term_registry.hpp).
 #include <map>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "dftb/energy_ledger.hpp"
 #include "objective/core/cell.hpp"
 
 namespace mesochain::dftb {
@@ -19,7 +22,9 @@ struct EvaluationRequest {
 };
 
 struct TermOutput {
-  double energy = 0.0;         // Hartree per cell
+  // The term's energies per cell (Hartree); its gradient and strain derivatives are those of
+  // energies.free() (the Energy entries minus the entropy term).
+  EnergyLedger energies;
   Eigen::Matrix3Xd gradient;   // Hartree/Bohr, 3 x N_o (empty when not requested)
   double dEdTranslation = 0.0; // Hartree/Bohr
   double dEdTwist = 0.0;       // Hartree/rad

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
+
+#include "dftb/pair_potential_term.hpp"
+#include "dftb/term_registry.hpp"
 
 namespace mesochain::dftb {
 
@@ -51,5 +55,24 @@ void PolynomialRepulsive::evaluate(double r, double& value, double& derivative) 
   value = p * x * x;
   derivative = -(dp * x * x + 2.0 * p * x);
 }
+
+// The repulsive term: the tables' pair potentials summed over the image pairs (always built).
+namespace {
+struct TableRepulsive {
+  std::shared_ptr<const ParameterSet> params;
+  double cutoff() const { return params->repulsiveCutoff(); }
+  void operator()(int si, int sj, double r, double& v, double& dv) const {
+    params->repulsive(si, sj).evaluate(r, v, dv);
+  }
+};
+}  // namespace
+
+MESOCHAIN_DFTB_TERM(TermRegistration{
+    "repulsive", 200, "pair repulsive potentials of the Slater-Koster tables", false,
+    [](const CalculatorSettings&) { return true; },
+    [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
+      return std::make_unique<PairTerm<TableRepulsive>>("repulsive", TableRepulsive{b.params});
+    },
+    nullptr})
 
 }  // namespace mesochain::dftb

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "common/electronic_temperature.hpp"
@@ -20,18 +21,6 @@ using objective::ObjectiveCell;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-std::vector<double> hubbardPerSpecies(const ParameterSet& params) {
-  std::vector<double> u;
-  for (int s = 0; s < params.speciesCount(); ++s) {
-    const SpeciesData& sp = params.species(s);
-    if (!(sp.hubbardU > 0.0))
-      throw InputError("<scc>", "Hubbard U of " + sp.name, std::to_string(sp.hubbardU),
-                       "a positive Hubbard U in " + sp.name + "-" + sp.name + ".skf for SCC");
-    u.push_back(sp.hubbardU);
-  }
-  return u;
-}
-
 template <class... Args>
 std::string fmt(const char* format, Args... args) {
   char buffer[512];
@@ -50,35 +39,43 @@ std::string historyTable(const std::vector<double>& energy, const std::vector<do
 }
 }  // namespace
 
-SccBandStructureTerm::SccBandStructureTerm(std::shared_ptr<const ParameterSet> params,
-                                           BandSettings band, SccSettings scc,
-                                           std::shared_ptr<ChargeCache> cache)
-    : params_(std::move(params)), band_(band), scc_(std::move(scc)), cache_(std::move(cache)) {
-  requireElectronicTemperature(band_.electronicTemperature, "the calculator settings",
-                               "band.electronic_temperature_hartree");
+void validate(const SccSettings& scc) {
+  const std::string src = "the calculator settings";
   // Mulliken populations carry rounding errors of a few 1e-15 per electron; a tolerance below
   // 1e-13 electrons cannot be certified in double precision.
-  if (!(scc_.chargeTolerance >= 1e-13))
-    throw InputError("<scc>", "scc.charge_tolerance", std::to_string(scc_.chargeTolerance),
+  if (!(scc.chargeTolerance >= 1e-13))
+    throw InputError(src, "scc.charge_tolerance", std::to_string(scc.chargeTolerance),
                      "at least 1e-13 electrons (tighter cannot be resolved in double precision)");
-  if (!(scc_.energyTolerance >= 1e-13))
-    throw InputError("<scc>", "scc.energy_tolerance_Ha", std::to_string(scc_.energyTolerance),
+  if (!(scc.energyTolerance >= 1e-13))
+    throw InputError(src, "scc.energy_tolerance_Ha", std::to_string(scc.energyTolerance),
                      "at least 1e-13 Hartree (tighter cannot be resolved in double precision)");
-  if (scc_.maxIterations < 1)
-    throw InputError("<scc>", "scc.max_iterations", std::to_string(scc_.maxIterations),
+  if (scc.maxIterations < 1)
+    throw InputError(src, "scc.max_iterations", std::to_string(scc.maxIterations),
                      "a positive count");
-  if (!(scc_.ewaldTolerance >= 1e-13 && scc_.ewaldTolerance <= 1e-2))
-    throw InputError("<scc>", "scc.ewald_tolerance", fmt("%.3g", scc_.ewaldTolerance),
+  if (!(scc.ewaldTolerance >= 1e-13 && scc.ewaldTolerance <= 1e-2))
+    throw InputError(src, "scc.ewald_tolerance", fmt("%.3g", scc.ewaldTolerance),
                      "a tolerance in [1e-13, 1e-2]");
-  makeChargeMixer(scc_.mixer, scc_.mixing);  // validates the mixer name and mixing
-  coulomb_ = makeCoulombLatticeSum(scc_.ewaldTolerance);
-  shortRange_ = std::make_unique<ShortRangeGammaSum>(hubbardPerSpecies(*params_),
-                                                     scc_.ewaldTolerance * 1e-2);
+  makeChargeMixer(scc.mixer, scc.mixing);  // validates the mixer name and mixing
+}
+
+SccBandStructureTerm::SccBandStructureTerm(
+    std::shared_ptr<const ParameterSet> params, BandSettings band, SccSettings scc,
+    std::vector<std::shared_ptr<const ChargeInteraction>> interactions,
+    std::shared_ptr<ChargeCache> cache)
+    : params_(std::move(params)),
+      band_(band),
+      scc_(std::move(scc)),
+      interactions_(std::move(interactions)),
+      cache_(std::move(cache)) {
+  validate(band_);
+  validate(scc_);
+  if (interactions_.empty())
+    throw std::logic_error("SccBandStructureTerm built without a charge interaction");
 }
 
 Eigen::MatrixXd SccBandStructureTerm::gammaMatrix(const ObjectiveCell& cell) const {
-  Eigen::MatrixXd g = coulomb_->matrix(cell) - shortRange_->matrix(cell);
-  for (int a = 0; a < cell.atomCount(); ++a) g(a, a) += params_->species(cell.species[a]).hubbardU;
+  Eigen::MatrixXd g = interactions_.front()->kernel(cell);
+  for (std::size_t k = 1; k < interactions_.size(); ++k) g += interactions_[k]->kernel(cell);
   return g;
 }
 
@@ -167,10 +164,12 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     cache_->recordLoop(iterations);
     if (converged && scc_.warmStart) cache_->store(cell.species, dqOut);
   }
-  out.energy = energy;
   reportBandSolution(geo, sol, kT, out);
-  out.extras["h0_energy"] = h0Energy;
-  out.extras["scc_energy"] = sccEnergy;
+  out.energies.add("scc", EnergyKind::Energy,
+                   energy - (sol.filling.bandEnergy - sol.filling.entropyTerm),
+                   "SCC (double counting + Coulomb)");
+  out.energies.add("h0", EnergyKind::Reported, h0Energy, "H0 energy Tr(rho H0)");
+  out.energies.add("scc_coulomb", EnergyKind::Reported, sccEnergy, "SCC Coulomb 1/2 dq gamma dq");
   out.extras["scc_iterations"] = iterations;
   out.extras["scc_converged"] = converged ? 1.0 : 0.0;
   out.extras["scc_warm_start"] = warm ? 1.0 : 0.0;
@@ -197,11 +196,15 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
   const BandDerivatives d =
       contractDerivatives(cell, params, geo.images, sol.p, wShifted, request.strain);
   const Eigen::MatrixXd weights = dqOut * dqOut.transpose();
-  const LatticeSumDerivatives lr = coulomb_->derivatives(cell, weights);
-  const LatticeSumDerivatives sr = shortRange_->derivatives(cell, weights);
-  if (request.gradient) out.gradient = d.gradient + lr.gradient - sr.gradient;
-  out.dEdTranslation = d.dEdTranslation + lr.dTranslation - sr.dTranslation;
-  out.dEdTwist = d.dEdTwist + lr.dTwist - sr.dTwist;
+  if (request.gradient) out.gradient = d.gradient;
+  out.dEdTranslation = d.dEdTranslation;
+  out.dEdTwist = d.dEdTwist;
+  for (const auto& interaction : interactions_) {
+    const ImagePairSum c = interaction->derivatives(cell, weights);
+    if (request.gradient) out.gradient += c.gradient;
+    out.dEdTranslation += c.dTranslation;
+    out.dEdTwist += c.dTwist;
+  }
 }
 
 }  // namespace mesochain::dftb

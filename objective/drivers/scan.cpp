@@ -421,6 +421,8 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     p.deformation = e.deformation;
     p.rotationOrder = e.rotationOrder;
     p.energy = o.result.freeEnergy;
+    for (const dftb::LedgerEntry& entry : o.result.energies.entries())
+      p.energies[entry.name] = entry.value;
     p.converged = o.converged;
     p.maxForce = maxForce(o.result.gradient);
     p.evaluations = o.evaluations;

@@ -74,6 +74,9 @@ struct ScanPoint {
   double deformation = 0.0;  // strain, rad per cell, or nominal curvature (1/Bohr)
   int rotationOrder = 0;     // bend: N_a of the ring (0 for the straight reference)
   double energy = 0.0;       // Mermin free energy per cell, Hartree
+  // The energy ledger of the final evaluation (dftb/energy_ledger.hpp): entry name -> Hartree
+  // per cell (empty in checkpoints of earlier versions).
+  std::map<std::string, double> energies;
   bool converged = false;
   double maxForce = 0.0;     // Hartree/Bohr at the final geometry
   double timeSeconds = 0.0;

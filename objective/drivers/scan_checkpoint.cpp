@@ -26,6 +26,7 @@ json pointJson(int index, const ScanPoint& p) {
   j["deformation"] = p.deformation;
   j["rotation_order"] = p.rotationOrder;
   j["energy_hartree"] = p.energy;
+  j["energies_hartree"] = p.energies;
   j["converged"] = p.converged;
   j["max_force_hartree_per_bohr"] = p.maxForce;
   j["time_s"] = p.timeSeconds;
@@ -126,6 +127,8 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
       p.deformation = e.at("deformation").get<double>();
       p.rotationOrder = e.at("rotation_order").get<int>();
       p.energy = e.at("energy_hartree").get<double>();
+      if (e.contains("energies_hartree"))
+        p.energies = e.at("energies_hartree").get<std::map<std::string, double>>();
       p.converged = e.at("converged").get<bool>();
       p.maxForce = e.at("max_force_hartree_per_bohr").get<double>();
       p.timeSeconds = e.at("time_s").get<double>();

@@ -30,6 +30,9 @@ json scanCurveJson(const ScanResult& r) {
     json q;
     q["deformation"] = p.deformation;
     q["energy_hartree"] = p.energy * r.cellsPerSlice;
+    json ledger = json::object();
+    for (const auto& [name, value] : p.energies) ledger[name] = value * r.cellsPerSlice;
+    q["energies_hartree"] = ledger;
     q["converged"] = p.converged;
     q["max_force_hartree_per_bohr"] = p.maxForce;
     q["time_s"] = p.timeSeconds;

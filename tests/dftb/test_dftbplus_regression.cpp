@@ -88,9 +88,9 @@ void compare(const std::string& name) {
     const json& exact = ref["derived_from_results_tag"];
     EXPECT_NEAR(r.freeEnergy, ref["summary"]["total_mermin_free_energy"].get<double>(),
                 tol["mermin_free_energy"].get<double>()) << name;
-    EXPECT_NEAR(r.bandEnergy, exact["band_energy"].get<double>(), tol["band_energy"].get<double>()) << name;
-    EXPECT_NEAR(r.entropyTerm, exact["TS"].get<double>(), tol["entropy_term"].get<double>()) << name;
-    EXPECT_NEAR(r.repulsive, exact["repulsive_energy"].get<double>(),
+    EXPECT_NEAR(r.energies.at("band"), exact["band_energy"].get<double>(), tol["band_energy"].get<double>()) << name;
+    EXPECT_NEAR(r.energies.at("entropy_term_ts"), exact["TS"].get<double>(), tol["entropy_term"].get<double>()) << name;
+    EXPECT_NEAR(r.energies.at("repulsive"), exact["repulsive_energy"].get<double>(),
                 tol["repulsive_energy"].get<double>()) << name;
     EXPECT_NEAR(r.extras.at("electrons"), ref["summary"]["number_of_electrons"].get<double>(), 1e-12);
     const json& f = ref["forces_richardson"]["forces"];

@@ -29,7 +29,7 @@ objective::ObjectiveCell twoAtomHelix(double T, double gamma, int na) {
 double energyOf(const dftb::EnergyTerm& t, const objective::ObjectiveCell& c) {
   dftb::TermOutput out;
   t.evaluate(c, {}, out);
-  return out.energy;
+  return out.energies.free();
 }
 
 }  // namespace

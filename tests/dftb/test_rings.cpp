@@ -66,7 +66,7 @@ TEST(Rings, SampledAngularNumbersConvergeToTheExactSum) {
     const double err = std::abs(r.freeEnergy - exact);
     EXPECT_LT(err, errPrev) << m;
     // The reported estimate bounds the actual error.
-    EXPECT_GE(r.extras.at("angular_sampling_error_estimate"), err) << m;
+    EXPECT_GE(r.energies.at("angular_sampling_error_estimate"), err) << m;
     errPrev = err;
   }
   EXPECT_LT(errPrev, 1e-6);

@@ -45,10 +45,10 @@ void compareWithDftbplus(const std::string& name) {
   EXPECT_EQ(r.extras.at("scc_converged"), 1.0);
   EXPECT_NEAR(r.freeEnergy, ref["mermin_energy"].get<double>(), tol["mermin_free_energy"]);
   const auto& e = ref["detailed_out_energies"];
-  EXPECT_NEAR(r.extras.at("scc_energy"), e["Energy SCC"].get<double>(), tol["scc_energy"]);
-  EXPECT_NEAR(r.extras.at("h0_energy"), e["Energy H0"].get<double>(), tol["h0_energy"]);
-  EXPECT_NEAR(r.bandEnergy, e["Band energy"].get<double>(), tol["band_energy"]);
-  EXPECT_NEAR(r.repulsive, e["Repulsive energy"].get<double>(), tol["repulsive_energy"]);
+  EXPECT_NEAR(r.energies.at("scc_coulomb"), e["Energy SCC"].get<double>(), tol["scc_energy"]);
+  EXPECT_NEAR(r.energies.at("h0"), e["Energy H0"].get<double>(), tol["h0_energy"]);
+  EXPECT_NEAR(r.energies.at("band"), e["Band energy"].get<double>(), tol["band_energy"]);
+  EXPECT_NEAR(r.energies.at("repulsive"), e["Repulsive energy"].get<double>(), tol["repulsive_energy"]);
   const auto& q = r.series.at("mulliken_charges");
   ASSERT_EQ(q.size(), ref["gross_atomic_charges"].size());
   for (size_t a = 0; a < q.size(); ++a)
@@ -79,7 +79,7 @@ TEST(Scc, RingCellEqualsExplicitCopies) {
   const dftb::Result ru = calc.evaluate(unit, {true, false});
   const dftb::Result rm = calc.evaluate(mol, {true, false});
   EXPECT_NEAR(6 * ru.freeEnergy, rm.freeEnergy, 1e-9);
-  EXPECT_NEAR(6 * ru.extras.at("scc_energy"), rm.extras.at("scc_energy"), 1e-9);
+  EXPECT_NEAR(6 * ru.energies.at("scc_coulomb"), rm.energies.at("scc_coulomb"), 1e-9);
   const auto& qu = ru.series.at("mulliken_charges");
   const auto& qm = rm.series.at("mulliken_charges");
   EXPECT_GT(std::abs(qu[0]), 0.01);  // real charge transfer C <- H

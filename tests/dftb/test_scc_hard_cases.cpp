@@ -111,7 +111,7 @@ TEST(SccHardCases, ChargeSloshingInALongCell) {
   EXPECT_GE(broyden.freeEnergy, plain.freeEnergy - 1e-12);
   // The history holds the band term (no repulsive): its first entry is the functional at the
   // non-SCC density.
-  EXPECT_LE(broyden.freeEnergy - broyden.repulsive,
+  EXPECT_LE(broyden.freeEnergy - broyden.energies.at("repulsive"),
             broyden.series.at("scc_history_energy").front() + 1e-12);
 }
 

@@ -22,7 +22,7 @@ TEST(SccHelical, ChainEqualsItsTranslationalSupercell) {
   const auto& qs = rs.series.at("mulliken_charges");
   EXPECT_GT(std::abs(qu[0]), 0.02);  // real charge transfer
   EXPECT_NEAR(ru.freeEnergy / 2, rs.freeEnergy / 24, 1e-7);
-  EXPECT_NEAR(ru.extras.at("scc_energy") / 2, rs.extras.at("scc_energy") / 24, 1e-7);
+  EXPECT_NEAR(ru.energies.at("scc_coulomb") / 2, rs.energies.at("scc_coulomb") / 24, 1e-7);
   for (int c = 0; c < 12; ++c)
     for (int a = 0; a < 2; ++a) EXPECT_NEAR(qu[a], qs[2 * c + a], 1e-7);
   // The unit's atoms are the supercell's first two; forces in the same frame.
@@ -97,7 +97,7 @@ TEST(SccHelical, TwistedRibbonEqualsItsTranslationalSupercell) {
     if (unit.species[a] == unit.species[9]) maxH = std::max(maxH, std::abs(qu[a]));
   EXPECT_GT(maxH, 0.05);  // real charge transfer to/from the H
   EXPECT_NEAR(ru.freeEnergy / 10, rs.freeEnergy / 60, 1e-7);
-  EXPECT_NEAR(ru.extras.at("scc_energy") / 10, rs.extras.at("scc_energy") / 60, 1e-7);
+  EXPECT_NEAR(ru.energies.at("scc_coulomb") / 10, rs.energies.at("scc_coulomb") / 60, 1e-7);
   for (int c = 0; c < 6; ++c)
     for (int a = 0; a < 10; ++a) EXPECT_NEAR(qu[a], qs[10 * c + a], 1e-7) << c << " " << a;
   for (int a = 0; a < 10; ++a)

@@ -184,6 +184,11 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
     EXPECT_EQ(rest.points[k].deformation, full.points[k].deformation);
     EXPECT_NEAR(rest.points[k].energy, full.points[k].energy, 1e-12);
     EXPECT_EQ(rest.points[k].evaluations, full.points[k].evaluations);
+    // The ledger of every point, restored from the checkpoint or not, adds up to its energy.
+    const auto& e = rest.points[k].energies;
+    ASSERT_EQ(e.size(), full.points[k].energies.size()) << k;
+    EXPECT_NEAR(e.at("band") + e.at("repulsive") - e.at("entropy_term_ts"), rest.points[k].energy,
+                1e-12) << k;
   }
   // A checkpoint of an earlier version (a hash of a hand-kept list of settings that left out
   // the SCC settings and the dispersion summation, no settings recorded) is refused, saying so.
