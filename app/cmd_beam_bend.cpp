@@ -25,6 +25,8 @@
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
 #include "common/plot/png_io.hpp"
+#include "common/units.hpp"
+#include "objective/core/xyz_file.hpp"
 
 namespace mesochain::app {
 
@@ -38,8 +40,26 @@ struct BendCurveOptions {
   double tolerance = 0.02;
   double noise = 0.0;
   bool measuredCurvature = false;
+  std::vector<std::string> structures;  // one prefix per table: PREFIX-NNN.xyz of `mesochain scan`
   std::string outputDir = "bend-curve-out";
 };
+
+// The ring section of point `index` of a table from the scan's structure PREFIX-NNN.xyz; the
+// file's ring order must give the point's nominal curvature 2 pi / (N_a T0).
+beam::RingSection ringSection(const std::string& prefix, std::size_t index, const beam::ScanCurve& c,
+                              const beam::ScanPoint& p) {
+  const std::string file = fmt::format("{}-{:03d}.xyz", prefix, index);
+  const objective::XyzFrame f = objective::readXyzFile(file);
+  const int na = f.cell.symmetry.rotationOrder();
+  const double nominal = 2.0 * units::kPi / (na * c.cellLength);
+  if (!f.cell.symmetry.isRing() || std::abs(nominal - p.deformation) > 1e-6 * p.deformation)
+    throw InputError(file, "mesochain:rotation_order",
+                     fmt::format("{} ({}, curvature {:.9g} per Bohr)", na, f.cell.symmetry.isRing() ? "a ring" : "not a ring",
+                                 nominal),
+                     fmt::format("the ring of point {} of {} (curvature {:.9g} per Bohr)", index, c.source,
+                                 p.deformation));
+  return beam::measureRingSection(f.cell.positions);
+}
 
 int runBendCurve(const BendCurveOptions& o) {
   const std::string cl = "<command line>";
@@ -49,6 +69,9 @@ int runBendCurve(const BendCurveOptions& o) {
   std::string referenceFrom = reference ? "--reference-hartree" : "";
   std::vector<beam::BendSample> rings;
   const beam::ScanCurve& first = curves.front();
+  if (!o.structures.empty() && o.structures.size() != curves.size())
+    throw InputError(cl, "--structures", fmt::format("{} prefixes for {} tables", o.structures.size(), curves.size()),
+                     "one structure prefix per table, in the order of the tables");
   for (const beam::ScanCurve& c : curves) {
     if (c.kind != "bend")
       throw InputError(c.source, "key kind", "\"" + c.kind + "\"", "bend tables only");
@@ -63,7 +86,9 @@ int runBendCurve(const BendCurveOptions& o) {
                          fmt::format("the reference {:.12g} Ha of {} (one straight cell)", *reference, referenceFrom));
       if (!reference) reference = e, referenceFrom = c.source;
     }
-    for (const beam::ScanPoint& p : c.points) {
+    const std::size_t table = static_cast<std::size_t>(&c - curves.data());
+    for (std::size_t index = 0; index < c.points.size(); ++index) {
+      const beam::ScanPoint& p = c.points[index];
       if (!p.converged || p.deformation == 0.0) continue;
       const double k = o.measuredCurvature ? p.measuredCurvature : p.deformation;
       if (std::isnan(k))
@@ -78,7 +103,15 @@ int runBendCurve(const BendCurveOptions& o) {
                              fmt::format("{:.12g} Ha as in an earlier table (one energy per curvature)", r.energy));
           duplicate = true;
         }
-      if (!duplicate) rings.push_back({k, p.energy});
+      if (duplicate) continue;
+      beam::BendSample sample{k, p.energy};
+      if (!o.structures.empty()) {
+        const beam::RingSection r = ringSection(o.structures[table], index, c, p);
+        sample.radialExtent = r.radialExtent;
+        sample.meanSquareRadialOffset = r.meanSquareRadialOffset;
+        sample.axialExtent = r.axialExtent;
+      }
+      rings.push_back(sample);
     }
   }
   if (!reference)
@@ -105,7 +138,7 @@ int runBendCurve(const BendCurveOptions& o) {
   fs::create_directories(dir);
   const std::string png = (dir / "bend-curve.png").string();
   plot::writePng(png, beam::renderBendCurvePlot(
-                          curve, fmt::format("{}: secant and tangent stiffness, anchored at the straight reference",
+                          curve, fmt::format("{}: D(k), anchored at the straight reference",
                                              first.label())));
   j["files"] = {{"csv", (dir / "bend-curve.csv").string()}, {"plot", png}};
   writeFileAtomically((dir / "bend-curve.csv").string(), beam::bendCurveCsv(curve));
@@ -114,10 +147,15 @@ int runBendCurve(const BendCurveOptions& o) {
   const double f = beam::hartreeBohr2InEvNm2();
   std::cout << fmt::format("{}: {} rings, reference {:.10f} Ha ({})\n", first.label(), rings.size(), *reference,
                            referenceFrom);
-  std::cout << "  R (nm)      1/R (1/Bohr)   secant (eV nm2)  tangent (eV nm2)  quadratic\n";
+  const bool sections = !o.structures.empty();
+  std::cout << "  R (nm)      1/R (1/Bohr)   secant (eV nm2)  tangent (eV nm2)  quadratic"
+            << (sections ? "  radial extent (Bohr)  <u2> (Bohr2)" : "") << "\n";
   for (const beam::BendCurvePoint& p : curve.points)
-    std::cout << fmt::format("  {:<10.4g}  {:<13.6g}  {:<15.6g}  {:<16.6g}  {}\n", beam::si::kBohrInNm / p.sample.curvature,
-                             p.sample.curvature, p.secant * f, p.tangent * f, p.quadratic ? "yes" : "no");
+    std::cout << fmt::format("  {:<10.4g}  {:<13.6g}  {:<15.6g}  {:<16.6g}  {:<9}{}\n", beam::si::kBohrInNm / p.sample.curvature,
+                             p.sample.curvature, p.secant * f, p.tangent * f, p.quadratic ? "yes" : "no",
+                             sections ? fmt::format("  {:<20.6g}  {:.6g}", p.sample.radialExtent,
+                                                    p.sample.meanSquareRadialOffset)
+                                      : "");
   std::cout << fmt::format("linear regime ({}): D_0 = {:.6g} +- {:.2g} eV nm2 over {} ring(s), R >= {:.4g} nm\n",
                            curve.quadraticVerified ? "verified" : "NOT verified", curve.linear.value * f,
                            curve.linear.error * f, curve.linear.points, beam::si::kBohrInNm / curve.quadraticMaxCurvature);
@@ -153,6 +191,9 @@ SubcommandHooks attachBendCurveCommand(CLI::App& beamApp) {
   s->add_option("--energy-noise-hartree", o->noise, "standard deviation of one energy (default 0: exact)")
       ->check(finiteNumber(true));
   s->add_flag("--measured-curvature", o->measuredCurvature, "use the curvature measured from the relaxed atoms");
+  s->add_option("--structures", o->structures,
+                "per table, the structure prefix of its scan ([output] structures): ring cross-sections")
+      ->check(nonEmptyPath());
   s->add_option("-o,--output-dir", o->outputDir, "folder for bend-curve.json, .csv, .png")->check(nonEmptyPath());
   SubcommandHooks h;
   h.selected = [s] { return s->parsed(); };

@@ -47,6 +47,18 @@ double radiusNm(double curvature) { return si::kBohrInNm / curvature; }
 
 }  // namespace
 
+RingSection measureRingSection(const Eigen::Matrix3Xd& x) {
+  RingSection r;
+  if (x.cols() == 0) return r;
+  Eigen::VectorXd rho(x.cols());
+  for (long i = 0; i < x.cols(); ++i) rho(i) = std::hypot(x(0, i), x(1, i));
+  const Eigen::ArrayXd u = rho.array() - rho.mean();
+  r.radialExtent = u.maxCoeff() - u.minCoeff();
+  r.meanSquareRadialOffset = u.square().mean();
+  r.axialExtent = x.row(2).maxCoeff() - x.row(2).minCoeff();
+  return r;
+}
+
 BendCurve analyseBendCurve(std::vector<BendSample> rings, double reference, const BendCurveOptions& o) {
   const std::string& q = o.quantity;
   if (rings.empty()) throw InputError(o.source, q + " curve", "no ring (curvature > 0)", "at least one bent point");

@@ -25,6 +25,9 @@
 // and optionally a constant over a curvature window (anchored ½ D κ² over the rings in it, with
 // the secant range and a warning when the window leaves the quadratic regime).
 #include <limits>
+
+#include <Eigen/Dense>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,11 +39,20 @@ inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
 struct BendSample {
   double curvature = 0.0;  // 1/Bohr, > 0
   double energy = 0.0;     // Hartree per cell (absolute, like the scan table)
-  // Cross-section of the relaxed ring, when known (Bohr, Bohr²): extent of the atoms across the
-  // ring radius (thickness) and the mean square radial offset from their mean radius.
-  double thickness = kNotMeasured;
-  double meanSquareOffset = kNotMeasured;
+  // Cross-section of the relaxed ring, when known (measureRingSection; Bohr, Bohr²).
+  double radialExtent = kNotMeasured;
+  double meanSquareRadialOffset = kNotMeasured;
+  double axialExtent = kNotMeasured;
 };
+
+// The cross-section of a ring about z from its atoms (Bohr): with ρ the distance of an atom from
+// the ring axis and u = ρ − mean ρ, the radial extent max u − min u, ⟨u²⟩, and the extent along
+// z. For a soft bend the radial direction is the thickness (across the flat faces of a collapsed
+// tube; a membrane bent in the ring stores ½ C ⟨u²⟩ κ² per cell), for a hard bend the width.
+struct RingSection {
+  double radialExtent = 0.0, meanSquareRadialOffset = 0.0, axialExtent = 0.0;
+};
+RingSection measureRingSection(const Eigen::Matrix3Xd& positions);
 
 struct BendCurveOptions {
   double tolerance = 0.02;   // relative tolerance of the quadratic regime

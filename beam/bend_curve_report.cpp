@@ -63,8 +63,11 @@ json bendCurveJson(const BendCurve& c, const std::string& label) {
               {"secant_hartree_bohr2", p.secant}, {"tangent_hartree_bohr2", p.tangent},
               {"moment_hartree_bohr", p.moment}, {"secant_eV_nm2", p.secant * f}, {"tangent_eV_nm2", p.tangent * f},
               {"quadratic", p.quadratic}};
-    if (std::isfinite(p.sample.thickness)) q["thickness_bohr"] = p.sample.thickness;
-    if (std::isfinite(p.sample.meanSquareOffset)) q["mean_square_offset_bohr2"] = p.sample.meanSquareOffset;
+    if (std::isfinite(p.sample.radialExtent)) {
+      q["radial_extent_bohr"] = p.sample.radialExtent;
+      q["mean_square_radial_offset_bohr2"] = p.sample.meanSquareRadialOffset;
+      q["axial_extent_bohr"] = p.sample.axialExtent;
+    }
     pts.push_back(q);
   }
   j["points"] = pts;
@@ -76,12 +79,13 @@ std::string bendCurveCsv(const BendCurve& c) {
   const double f = hartreeBohr2InEvNm2();
   std::string s = fmt::format("# reference_energy_hartree = {:.17g}\n", c.referenceEnergy);
   s += "curvature_per_bohr,radius_nm,energy_above_reference_hartree,secant_eV_nm2,tangent_eV_nm2,"
-       "moment_hartree_bohr,quadratic,thickness_bohr,mean_square_offset_bohr2\n";
+       "moment_hartree_bohr,quadratic,radial_extent_bohr,mean_square_radial_offset_bohr2,axial_extent_bohr\n";
   auto opt = [](double x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : std::string(); };
   for (const BendCurvePoint& p : c.points)
-    s += fmt::format("{:.17g},{:.10g},{:.17g},{:.10g},{:.10g},{:.10g},{},{},{}\n", p.sample.curvature,
+    s += fmt::format("{:.17g},{:.10g},{:.17g},{:.10g},{:.10g},{:.10g},{},{},{},{}\n", p.sample.curvature,
                      nm() / p.sample.curvature, p.energyAbove, p.secant * f, p.tangent * f, p.moment,
-                     p.quadratic ? "true" : "false", opt(p.sample.thickness), opt(p.sample.meanSquareOffset));
+                     p.quadratic ? "true" : "false", opt(p.sample.radialExtent), opt(p.sample.meanSquareRadialOffset),
+                     opt(p.sample.axialExtent));
   return s;
 }
 

@@ -237,6 +237,23 @@ TEST(BeamBendCurve, BadInputIsAClearError) {
   throwsWith({{1e-3, kRef + 1e-3}}, w, "lo < hi");
 }
 
+// Two coaxial layers at R ± h/2 (n atoms each, spread over z in [0, w]): radial extent h,
+// <u²> = h²/4, axial extent w, whatever the angles.
+TEST(BeamBendCurve, RingSectionOfTwoCoaxialLayers) {
+  const double R = 700.0, h = 6.4, w = 110.0;
+  const int n = 12;
+  Eigen::Matrix3Xd x(3, 2 * n);
+  for (int i = 0; i < n; ++i)
+    for (int l = 0; l < 2; ++l) {
+      const double r = R + (l ? 0.5 : -0.5) * h, phi = 0.001 * i, z = w * i / (n - 1);
+      x.col(2 * i + l) << r * std::cos(phi), r * std::sin(phi), z;
+    }
+  const RingSection s = measureRingSection(x);
+  EXPECT_NEAR(s.radialExtent, h, 1e-9);
+  EXPECT_NEAR(s.meanSquareRadialOffset, 0.25 * h * h, 1e-9);
+  EXPECT_NEAR(s.axialExtent, w, 1e-12);
+}
+
 TEST(BeamBendCurve, ReportHasUnitsAndOneCsvRowPerRing) {
   const BendCurve b = analyseBendCurve(quarticRings(kD, 1e7, 3.5e-4, 5), kRef, {});
   const auto j = bendCurveJson(b, "bend soft");
