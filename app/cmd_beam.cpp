@@ -133,7 +133,7 @@ Command makeBeamCommand() {
         ->check(CLI::IsMember({"anchored", "free"}));
     s->add_option("--bend-reference-hartree", opt->bendReference,
                   "straight reference energy per cell, for bend tables of rings alone")
-        ->check(finiteNumber(true, 1e300));
+        ->check(anyFiniteNumber());
     s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)")->check(finiteNumber(false));
     s->add_option("--K-hartree-per-rad2", opt->k, "twisting K per cell (U = K gamma^2 / 2)")
         ->check(finiteNumber(false));

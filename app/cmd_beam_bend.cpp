@@ -175,6 +175,18 @@ int runBendCurve(const BendCurveOptions& o) {
 
 }  // namespace
 
+CLI::Validator anyFiniteNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !std::isfinite(v))
+          return fmt::format("found {}; expected a finite number", text);
+        return {};
+      },
+      "NUMBER");
+}
+
 SubcommandHooks attachBendCurveCommand(CLI::App& beamApp) {
   auto o = std::make_shared<BendCurveOptions>();
   CLI::App* s = beamApp.add_subcommand(
@@ -182,7 +194,7 @@ SubcommandHooks attachBendCurveCommand(CLI::App& beamApp) {
   s->add_option("tables", o->tables, "bend tables of one direction (.json, .csv), merged")->required();
   s->add_option("--reference-hartree", o->reference,
                 "energy per cell of the straight reference (when no table has the point at curvature 0)")
-      ->check(finiteNumber(true, 1e300));
+      ->check(anyFiniteNumber());
   s->add_option("--window-nm", o->windowNm, "a constant over the rings with RMIN <= R <= RMAX (nm): RMIN,RMAX")
       ->delimiter(',')
       ->expected(2);

@@ -5,6 +5,7 @@
 
 namespace CLI {
 class App;
+class Validator;
 }
 
 namespace mesochain::app {
@@ -15,5 +16,8 @@ struct SubcommandHooks {
 };
 
 SubcommandHooks attachBendCurveCommand(CLI::App& beam);
+
+// Any finite number (an energy in Hartree may have either sign).
+CLI::Validator anyFiniteNumber();
 
 }  // namespace mesochain::app
