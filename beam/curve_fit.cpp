@@ -216,7 +216,7 @@ QuadraticFit fitQuadraticRegime(std::vector<CurvePoint> points, const FitOptions
           "anharmonic: the next term changes the energy at |x| = {:.6g} by {:.3g}% of the quadratic "
           "one ({:.1f} standard errors), beyond the tolerance {:.3g}%",
           f.halfWidth, 100.0 * f.anharmonicity, f.anharmonicZ, 100.0 * tol);
-    } else if (anchored && secantDrift(points, n, o, f)) {
+    } else if (anchored && !o.linearTerm && secantDrift(points, n, o, f)) {
       // f.rejection set by secantDrift
     } else {
       for (const WindowResult& a : accepted) {

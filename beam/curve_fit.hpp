@@ -45,7 +45,7 @@ struct FitOptions {
   bool linearTerm = false;         // fit b x as well (reference not exactly at the minimum)
   // U(0) fixed at this energy (Hartree per cell) instead of fitted; points at x = 0 are dropped.
   std::optional<double> anchorEnergy;
-  // Anchored fits only: standard deviation of one point's energy (Hartree; 0: exact). A window
+  // Anchored fits without the linear term only: standard deviation of one point's energy (Hartree; 0: exact). A window
   // is also refused when the secant 2 (U - U(0)) / x^2 of its edge point leaves that of its
   // innermost point by more than the tolerance and 3 of their combined noise (criterion (d),
   // docs/beam.md): a residual-based noise estimate cannot tell a smooth drift from noise in
