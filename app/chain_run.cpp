@@ -137,12 +137,18 @@ std::string scanFileText(const Chain& c, const ScanStage& s, const toml::value& 
   std::string t = fmt::format("# written by `mesochain chain {}`; docs/scan-file.md\nformat = 1\ncell = {}\nkind = \"{}\"\n",
                               c.file.filename().string(), quoted(c.cellPath), s.kind);
   if (*s.direction) t += fmt::format("direction = \"{}\"\n", s.direction);
+  std::string dimensions;
   for (const auto& [k, v] : keys.as_table()) {
+    if (k == "dimensions" && v.is_table()) {  // [STAGE.dimensions] -> the scan's [dimensions]
+      for (const auto& [dk, dv] : v.as_table()) dimensions += dk + " = " + toml::format(dv) + "\n";
+      continue;
+    }
     if (k == "direction" || k == "kind" || k == "cell" || v.is_table())
       throw InputError(c.file.string(), fmt::format("key {}.{} (line {})", s.name, k, v.location().line()),
                        "a key the chain sets itself", "the scan's deformation keys (strains, rotation_orders, ...)");
     t += k + " = " + toml::format(v) + "\n";
   }
+  if (!dimensions.empty()) t += "[dimensions]\n" + dimensions;
   t += fmt::format("[relax]\nforce_tolerance = {:.17g}\n[output]\njson = \"{}.json\"\ncsv = \"{}.csv\"\n"
                    "checkpoint = \"{}.checkpoint.json\"\n",
                    c.forceTolerance, s.name, s.name, s.name);
@@ -159,7 +165,13 @@ int runChain(const ChainOptions& o) {
   const Chain c = readChain(o.file);
   fs::create_directories(c.dir);
   const fs::path statePath = c.dir / "chain-state.json";
-  json state = fs::exists(statePath) ? json::parse(readText(statePath)) : json::object();
+  json state = json::object();
+  if (fs::exists(statePath)) {
+    state = json::parse(readText(statePath), nullptr, false);
+    if (state.is_discarded() || !state.is_object())
+      throw InputError(statePath.string(), "the chain state", "not a JSON object",
+                       "the file a chain writes (delete it to rerun every stage)");
+  }
   const std::string cellText = readText(c.cellPath);
   if (cellText.empty()) throw InputError(c.file.string(), "key cell", c.cellPath, "a readable cell file");
   json report;
