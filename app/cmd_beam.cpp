@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/cli_checks.hpp"
+#include "app/cmd_beam_bend.hpp"
 #include "app/commands.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
@@ -42,6 +43,8 @@ struct BeamOptions {
   std::string linearTerm = "auto";
   double tolerance = 0.02;
   bool measuredCurvature = false;
+  std::string bendOffset = "anchored";
+  std::optional<double> bendReference;
   std::optional<double> c, k, ds, dh, t0;
   std::optional<int> atoms;
   std::string outputDir = "beam-out";
@@ -104,8 +107,9 @@ Command makeBeamCommand() {
   auto opt = std::make_shared<BeamOptions>();
   auto plateSub = std::make_shared<CLI::App*>(nullptr);
   auto plate = std::make_shared<PlateOptions>();
+  auto bendCurve = std::make_shared<SubcommandHooks>();
   Command c;
-  c.attach = [sub, opt, plateSub, plate](CLI::App& app) {
+  c.attach = [sub, opt, plateSub, plate, bendCurve](CLI::App& app) {
     CLI::App* s = app.add_subcommand(
         "beam", "fit scan tables (or take C, K, D_s, D_h) to a beam and bricks; write beam.json and mDEM files");
     *sub = s;
@@ -126,6 +130,12 @@ Command makeBeamCommand() {
     s->add_option("--tolerance", opt->tolerance, "relative tolerance of the quadratic regime")
         ->check(finiteNumber(false, 1.0));
     s->add_flag("--measured-curvature", opt->measuredCurvature, "fit bends against the measured curvature");
+    s->add_option("--bend-offset", opt->bendOffset,
+                  "U(0) of the bend fits: anchored (default: the straight reference) or free")
+        ->check(CLI::IsMember({"anchored", "free"}));
+    s->add_option("--bend-reference-hartree", opt->bendReference,
+                  "straight reference energy per cell, for bend tables of rings alone")
+        ->check(anyFiniteNumber());
     s->add_option("--C-hartree", opt->c, "stretching C per cell (U = C eps^2 / 2)")->check(finiteNumber(false));
     s->add_option("--K-hartree-per-rad2", opt->k, "twisting K per cell (U = K gamma^2 / 2)")
         ->check(finiteNumber(false));
@@ -148,10 +158,12 @@ Command makeBeamCommand() {
     p->add_option("--tolerance", plate->tolerance, "relative tolerance of the quadratic regime")
         ->check(finiteNumber(false, 1.0));
     p->add_flag("--measured-curvature", plate->measuredCurvature, "fit bends against the measured curvature");
+    *bendCurve = attachBendCurveCommand(*s);
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [opt, plateSub, plate] {
+  c.run = [opt, plateSub, plate, bendCurve] {
     if (*plateSub && (*plateSub)->parsed()) return runPlateCommand(*plate);
+    if (bendCurve->selected && bendCurve->selected()) return bendCurve->run();
     beam::BeamInputs in;
     std::vector<std::string> skipped;
     for (const std::string& p : opt->inputs) {
@@ -195,10 +207,14 @@ Command makeBeamCommand() {
     in.linearTerm = opt->linearTerm;
     in.tolerance = opt->tolerance;
     in.measuredCurvature = opt->measuredCurvature;
+    in.bendAnchor.offset = opt->bendOffset;
+    in.bendAnchor.referenceEnergy = opt->bendReference;
     if (opt->bricks < 2) throw InputError(cl, "--bricks", std::to_string(opt->bricks), "at least 2");
 
     prepareOutputFolder(opt->outputDir, cl, "option --output-dir");
     beam::BeamRun run = beam::runBeam(in);
+    if (run.report.contains("warnings"))
+      for (const auto& w : run.report["warnings"]) std::cerr << "warning: " << w.get<std::string>() << "\n";
     fs::create_directories(opt->outputDir);
     const fs::path dir(opt->outputDir);
     beam::MdemExportOptions ex;

@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/build_tube_sector.hpp"
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
 #include "common/electronic_temperature.hpp"
@@ -125,15 +126,22 @@ int buildCnt(const CntOptions& c, const CommonOptions& o) {
                     o, fmt::format("cnt{}{}.toml", c.n, c.m), fmt::format("({},{}) {} cell", c.n, c.m, c.cell));
 }
 
+std::vector<std::pair<int, int>> parseWalls(const std::vector<std::string>& texts, const std::string& command) {
+  std::vector<std::pair<int, int>> walls;
+  for (const std::string& s : texts) {
+    const auto nm = chiralPair(s);
+    if (!nm)
+      throw InputError("<command line>", "build " + command + ", wall '" + s + "'", "'" + s + "'",
+                       "chiral indices written n,m (e.g. 5,5) with 1 <= n <= 10000, 0 <= m <= 10000");
+    walls.push_back(*nm);
+  }
+  return walls;
+}
+
 int buildMultiWall(const MultiWallOptions& w, const CommonOptions& o) {
   std::vector<std::pair<int, int>> walls;
   std::string name = "mw", what;
-  for (const std::string& s : w.walls) {
-    const auto nm = chiralPair(s);
-    if (!nm)
-      throw InputError("<command line>", "build multiwall, wall '" + s + "'", "'" + s + "'",
-                       "chiral indices written n,m (e.g. 5,5) with 1 <= n <= 10000, 0 <= m <= 10000");
-    const auto [n, m] = *nm;
+  for (const auto& [n, m] : parseWalls(w.walls, "multiwall")) {
     walls.emplace_back(n, m);
     name += fmt::format("{}{}-{}", walls.size() > 1 ? "_" : "", n, m);
     what += fmt::format("{}({},{})", walls.size() > 1 ? "@" : "", n, m);
@@ -168,6 +176,11 @@ int buildRing(const RingOptions& r, const CommonOptions& o) {
                     fmt::format("{}-layer graphene ring sector ({} along the arc, 1/{} of the ring)",
                                 r.layers, name, r.rotationOrder));
 }
+int buildSector(const TubeSectorOptions& t, const CommonOptions& o) {
+  const double bond = o.bond * units::kAngstromInBohr;
+  BuiltTubeSector b = buildTubeSector(t, parseWalls(t.walls, "tube-sector"), bond);
+  return writeBuilt(std::move(b.cell), o, b.fileName, b.what);
+}
 }  // namespace
 
 Command makeBuildCommand() {
@@ -175,8 +188,9 @@ Command makeBuildCommand() {
   auto cnt = std::make_shared<CntOptions>();
   auto mw = std::make_shared<MultiWallOptions>();
   auto ring = std::make_shared<RingOptions>();
+  auto sector = std::make_shared<TubeSectorOptions>();
   struct Subs {
-    CLI::App *cnt = nullptr, *mw = nullptr, *ring = nullptr;
+    CLI::App *cnt = nullptr, *mw = nullptr, *ring = nullptr, *sector = nullptr;
   };
   auto subs = std::make_shared<Subs>();
   Command c;
@@ -211,15 +225,22 @@ Command makeBuildCommand() {
     g->add_option("--interlayer", ring->interlayer, "layer spacing, Å")->check(finiteNumber(false));
     addCommonOptions(g, *common, "ringLL-DIRECTION-NA.toml");
     subs->ring = g;
+
+    auto* ts = b->add_subcommand(
+        "tube-sector", "an angular sector of concentric walls, each an exact sector with its own atom count");
+    addTubeSectorOptions(*ts, *sector);
+    addCommonOptions(ts, *common, "sector_N-M_..-CD.toml");
+    subs->sector = ts;
   };
   c.selected = [subs] {
-    for (CLI::App* s : {subs->cnt, subs->mw, subs->ring})
+    for (CLI::App* s : {subs->cnt, subs->mw, subs->ring, subs->sector})
       if (s && s->parsed()) return true;
     return false;
   };
   c.run = [=] {
     if (subs->mw->parsed()) return buildMultiWall(*mw, *common);
     if (subs->ring->parsed()) return buildRing(*ring, *common);
+    if (subs->sector->parsed()) return buildSector(*sector, *common);
     return buildCnt(*cnt, *common);
   };
   return c;

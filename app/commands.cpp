@@ -10,10 +10,11 @@ Command makeBuildCommand();
 Command makeBeamCommand();
 Command makeScanCommand();
 Command makeSkgenCommand();
+Command makeChainCommand();
 
 std::vector<Command> allCommands() {
   return {makeVersionCommand(), makeRunCommand(),   makeScanCommand(), makeBuildCommand(),
-          makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand()};
+          makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand(), makeChainCommand()};
 }
 
 }  // namespace mesochain::app

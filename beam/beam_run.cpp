@@ -53,6 +53,7 @@ json fitReport(const QuadraticFit& f) {
   j["slope_hartree_per_unit"] = f.slope;
   j["slope_error"] = f.slopeError;
   j["energy0_hartree"] = f.energy0;
+  j["energy0_anchored"] = f.anchored;
   j["regime_verified"] = f.regimeVerified;
   j["note"] = f.note;
   json w = json::array();
@@ -150,8 +151,17 @@ BeamConstants packed(const Beam& b) {
 
 }  // namespace
 
+std::optional<double> straightReferenceEnergy(const ScanCurve& c) {
+  for (const ScanPoint& p : c.points)
+    if (p.converged && p.deformation == 0.0) return p.energy;
+  return std::nullopt;
+}
+
 FittedCurve fitScanCurve(const ScanCurve& c, const std::string& quantity, const std::string& reportKey,
-                         double tolerance, const std::string& linearTerm, bool measuredCurvature) {
+                         double tolerance, const std::string& linearTerm, bool measuredCurvature,
+                         const BendAnchor& anchor) {
+  if (anchor.offset != "anchored" && anchor.offset != "free")
+    throw InputError(c.source, "bend offset", "\"" + anchor.offset + "\"", "anchored or free");
   FittedCurve fc;
   fc.quantity = quantity;
   fc.reportKey = reportKey;
@@ -176,6 +186,20 @@ FittedCurve fitScanCurve(const ScanCurve& c, const std::string& quantity, const 
   fc.options.quantity = quantity;
   fc.options.relativeTolerance = tolerance;
   fc.options.linearTerm = linearTerm == "on" || (linearTerm == "auto" && c.kind != "bend");
+  if (c.kind == "bend" && anchor.offset == "anchored") {
+    const std::optional<double> own = straightReferenceEnergy(c);
+    if (own && anchor.referenceEnergy && std::abs(*own - *anchor.referenceEnergy) > 1e-9 * std::abs(*own))
+      throw InputError(c.source, "the point at curvature 0",
+                       fmt::format("the straight reference at {:.12g} Ha", *own),
+                       fmt::format("the given reference energy {:.12g} Ha (one straight cell per curve)",
+                                   *anchor.referenceEnergy));
+    fc.options.anchorEnergy = own ? own : anchor.referenceEnergy;
+    if (!fc.options.anchorEnergy)
+      fc.warnings.push_back(
+          "no straight reference (a converged point at curvature 0) and no reference energy given: "
+          "U(0) is fitted as a free offset, which can absorb a curve that is not quadratic "
+          "(give --bend-reference-hartree)");
+  }
   fc.fit = fitQuadraticRegime(fc.points, fc.options);
   return fc;
 }
@@ -216,7 +240,8 @@ BeamRun runBeam(const BeamInputs& in) {
     if (!atoms) atoms = c.atomsPerCell, atomsFrom = c.source;
     if (!in.thickness && !std::isnan(c.thickness) && !thickness) thickness = c.thickness;
 
-    FittedCurve fc = fitScanCurve(c, kNames[s], kKeys[s], in.tolerance, in.linearTerm, in.measuredCurvature);
+    FittedCurve fc =
+        fitScanCurve(c, kNames[s], kKeys[s], in.tolerance, in.linearTerm, in.measuredCurvature, in.bendAnchor);
     const QuadraticFit& f = fc.fit;
     slot(run.constants, s) = f.stiffness;
     slot(run.uncertainties, s) = f.uncertainty;
@@ -226,6 +251,8 @@ BeamRun runBeam(const BeamInputs& in) {
               {"curve", c.label()}, {"deformation_unit", c.deformationUnit},
               {"linear_term", fc.options.linearTerm}, {"unconverged_points_skipped", fc.unconvergedSkipped},
               {"fit", fitReport(f)}};
+    if (c.kind == "bend") j["offset"] = f.anchored ? "anchored" : "free";
+    if (!fc.warnings.empty()) j["warnings"] = fc.warnings;
     if (!std::isnan(c.width)) j["measured_width_bohr"] = c.width;
     constants[kKeys[s]] = j;
     run.curves.push_back(std::move(fc));
@@ -244,6 +271,10 @@ BeamRun runBeam(const BeamInputs& in) {
     from[s] = g.source;
     constants[kKeys[s]] = {{"value", g.value}, {"uncertainty", g.uncertainty}, {"source", g.source}};
   }
+  json warnings = json::array();
+  for (const FittedCurve& fc : run.curves)
+    for (const std::string& w : fc.warnings) warnings.push_back(fc.source + ": " + w);
+  if (!warnings.empty()) report["warnings"] = warnings;
   if (!t0) throw InputError(src, "T0", "no cell length", "T0_bohr from a scan table or the constants");
   run.constants.cellLength = *t0;
   run.uncertainties.cellLength = 0.0;

@@ -22,6 +22,15 @@ struct GivenConstant {
   std::string source;
 };
 
+// How the bend fits set U(0) (docs/beam.md): "anchored" (default) fixes it at the energy of the
+// straight reference, the table's point at curvature 0 or `referenceEnergy` (Hartree per cell,
+// for tables of rings alone); "free" fits it. A table with neither is fitted with U(0) free and
+// a warning.
+struct BendAnchor {
+  std::string offset = "anchored";
+  std::optional<double> referenceEnergy;
+};
+
 // Integer limits of the inputs (int fields; larger values would wrap): a brick of 1e7 cells is
 // ~1 mm of tube, far beyond a DEM element; 1e8 atoms per cell exceeds any DFTB cell.
 inline constexpr long long kMaxCellsPerBrick = 10'000'000;
@@ -42,6 +51,7 @@ struct BeamInputs {
   std::string linearTerm = "auto";   // auto (twist and stretch yes, bend no), "on", "off"
   bool measuredCurvature = false;    // bend: fit against the measured curvature
   double tolerance = 0.02;           // FitOptions::relativeTolerance
+  BendAnchor bendAnchor;             // how U(0) of the bends is set (anchored by default)
   std::string source = "<command line>";
 };
 
@@ -55,6 +65,7 @@ struct FittedCurve {
   std::string deformationUnit;  // "strain", "rad_per_cell", "per_bohr"
   std::vector<CurvePoint> points;  // converged points, as fitted
   int unconvergedSkipped = 0;
+  std::vector<std::string> warnings;  // e.g. a bend fitted with U(0) free for want of a reference
   FitOptions options;
   QuadraticFit fit;
 };
@@ -71,8 +82,14 @@ struct BeamRun {
 
 // Fits one scan curve (unconverged points left out; bends against the measured curvature when
 // asked). linearTerm: "auto" (on for stretch and twist, off for bends), "on" or "off".
+// Bends: U(0) as `anchor` says.
 FittedCurve fitScanCurve(const ScanCurve& curve, const std::string& quantity, const std::string& reportKey,
-                         double tolerance, const std::string& linearTerm, bool measuredCurvature);
+                         double tolerance, const std::string& linearTerm, bool measuredCurvature,
+                         const BendAnchor& anchor = {});
+
+// The energy of the straight reference of a bend table: its converged point at deformation 0
+// (nullopt when it has none, e.g. a sector cell's table or rings alone).
+std::optional<double> straightReferenceEnergy(const ScanCurve& curve);
 
 // Throws InputError for missing, duplicated or inconsistent inputs and refused curves.
 BeamRun runBeam(const BeamInputs& inputs);

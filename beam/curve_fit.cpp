@@ -33,16 +33,18 @@ LeastSquares leastSquares(const Eigen::MatrixXd& a, const Eigen::VectorXd& y) {
   return r;
 }
 
-// Columns in the scaled variable t = x / X: 1, [t], t^2/2, then with `extended` t^4 [and t^3].
-// Returns the indices of the t^2/2, t, t^4 and t^3 columns (-1 when absent).
+// Columns in the scaled variable t = x / X: [1], [t], t^2/2, then with `extended` t^4 [and t^3].
+// Returns the indices of the constant, t^2/2, t, t^4 and t^3 columns (-1 when absent); the
+// constant is absent when U(0) is anchored.
 struct Basis {
-  int quadratic = -1, linear = -1, quartic = -1, cubic = -1;
+  int constant = -1, quadratic = -1, linear = -1, quartic = -1, cubic = -1;
   int columns = 0;
 };
 
-Basis makeBasis(bool linearTerm, bool extended) {
+Basis makeBasis(bool linearTerm, bool extended, bool anchored) {
   Basis b;
-  int c = 1;  // column 0: constant
+  int c = 0;
+  if (!anchored) b.constant = c++;
   if (linearTerm) b.linear = c++;
   b.quadratic = c++;
   if (extended) {
@@ -57,7 +59,7 @@ Eigen::MatrixXd design(const std::vector<CurvePoint>& p, int n, double scale, co
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, b.columns);
   for (int i = 0; i < n; ++i) {
     const double t = p[i].x / scale;
-    a(i, 0) = 1.0;
+    if (b.constant >= 0) a(i, b.constant) = 1.0;
     if (b.linear >= 0) a(i, b.linear) = t;
     a(i, b.quadratic) = 0.5 * t * t;
     if (b.quartic >= 0) a(i, b.quartic) = t * t * t * t;
@@ -102,7 +104,8 @@ struct WindowResult {
 // Quadratic (and, when possible, extended) fit of the first n points.
 bool fitWindow(const std::vector<CurvePoint>& p, int n, const FitOptions& o, WindowResult& out) {
   const double scale = std::abs(p[n - 1].x);
-  const Basis quad = makeBasis(o.linearTerm, false);
+  const bool anchored = o.anchorEnergy.has_value();
+  const Basis quad = makeBasis(o.linearTerm, false, anchored);
   if (n < quad.columns + 1 || distinctValues(p, n, !o.linearTerm) < quad.columns) return false;
   Eigen::VectorXd y(n);
   for (int i = 0; i < n; ++i) y(i) = p[i].energy;
@@ -114,12 +117,12 @@ bool fitWindow(const std::vector<CurvePoint>& p, int n, const FitOptions& o, Win
   const double s2 = scale * scale;
   w.stiffness = q.coef(quad.quadratic) / s2;
   w.standardError = std::sqrt(std::max(0.0, q.covariance(quad.quadratic, quad.quadratic))) / s2;
-  out.energy0 = q.coef(0);
+  out.energy0 = quad.constant >= 0 ? q.coef(quad.constant) : 0.0;
   if (quad.linear >= 0) {
     out.slope = q.coef(quad.linear) / scale;
     out.slopeError = std::sqrt(std::max(0.0, q.covariance(quad.linear, quad.linear))) / scale;
   }
-  const Basis ext = makeBasis(o.linearTerm, true);
+  const Basis ext = makeBasis(o.linearTerm, true, anchored);
   if (n >= ext.columns + 1 && distinctValues(p, n, !o.linearTerm) >= ext.columns) {
     const LeastSquares e = leastSquares(design(p, n, scale, ext), y);
     if (e.ok && e.coef(ext.quadratic) != 0.0) {
@@ -143,6 +146,22 @@ bool fitWindow(const std::vector<CurvePoint>& p, int n, const FitOptions& o, Win
   return true;
 }
 
+// Criterion (d) of an anchored fit: the secant of the window's edge point against that of its
+// innermost point (energies already relative to the anchor; points sorted by |x|).
+bool secantDrift(const std::vector<CurvePoint>& p, int n, const FitOptions& o, WindowFit& f) {
+  const CurvePoint& a = p.front();
+  const CurvePoint& b = p[n - 1];
+  auto secant = [](const CurvePoint& c) { return 2.0 * c.energy / (c.x * c.x); };
+  auto sigma = [&](const CurvePoint& c) { return 2.0 * std::sqrt(2.0) * o.energyNoise / (c.x * c.x); };
+  const double sa = secant(a), sb = secant(b);
+  if (std::abs(sb - sa) <= o.relativeTolerance * std::abs(sa) + 3.0 * std::hypot(sigma(a), sigma(b))) return false;
+  f.rejection = fmt::format(
+      "not quadratic: the secant 2 (U - U(0)) / x^2 changes from {:.6g} (|x| = {:.6g}) to {:.6g} (|x| = {:.6g}), "
+      "{:+.3g}%, beyond the tolerance {:.3g}%",
+      sa, std::abs(a.x), sb, std::abs(b.x), 100.0 * (sb / sa - 1.0), 100.0 * o.relativeTolerance);
+  return true;
+}
+
 }  // namespace
 
 QuadraticFit fitQuadraticRegime(std::vector<CurvePoint> points, const FitOptions& o) {
@@ -153,20 +172,33 @@ QuadraticFit fitQuadraticRegime(std::vector<CurvePoint> points, const FitOptions
   }
   if (!(o.relativeTolerance > 0.0) || !(o.zScore > 0.0))
     throw InputError(o.source, "fit options", "a non-positive tolerance", "tolerance > 0 and z > 0");
-  const int minimum = (o.linearTerm ? 3 : 2) + 1;
+  const bool anchored = o.anchorEnergy.has_value();
+  if (anchored) requireFinite(*o.anchorEnergy, o.source, q + " curve: anchor energy U(0)");
+  int dropped = 0;
+  if (anchored) {
+    // The reference itself: its energy is the anchor, not a data point of the fit.
+    const auto atZero = [](const CurvePoint& p) { return p.x == 0.0; };
+    dropped = static_cast<int>(std::count_if(points.begin(), points.end(), atZero));
+    points.erase(std::remove_if(points.begin(), points.end(), atZero), points.end());
+  }
+  const int parameters = (anchored ? 0 : 1) + (o.linearTerm ? 1 : 0) + 1;
+  const int minimum = parameters + 1;
   const int total = static_cast<int>(points.size());
   if (total < minimum)
     throw InputError(o.source, fmt::format(
-        "{} curve: too few points ({}); a quadratic fit{} needs at least {} points near x = 0",
-        q, total, o.linearTerm ? " with a linear term" : "", minimum));
+        "{} curve: too few points ({}{}); a quadratic fit{}{} needs at least {} points near x = 0",
+        q, total, anchored ? " besides the reference at x = 0" : "", o.linearTerm ? " with a linear term" : "",
+        anchored ? " anchored at U(0)" : "", minimum));
   std::stable_sort(points.begin(), points.end(),
                    [](const CurvePoint& a, const CurvePoint& b) { return std::abs(a.x) < std::abs(b.x); });
-  // Energies relative to the point nearest x = 0 (conditioning).
-  const double e0 = points.front().energy;
+  // Energies relative to the anchor, or to the point nearest x = 0 (conditioning).
+  const double e0 = anchored ? *o.anchorEnergy : points.front().energy;
   for (CurvePoint& pt : points) pt.energy -= e0;
 
   QuadraticFit result;
   result.pointsTotal = total;
+  result.anchored = anchored;
+  result.referencePointsDropped = dropped;
   std::vector<WindowResult> accepted;
   const double tol = o.relativeTolerance;
   for (int n = minimum; n <= total; ++n) {
@@ -184,11 +216,13 @@ QuadraticFit fitQuadraticRegime(std::vector<CurvePoint> points, const FitOptions
           "anharmonic: the next term changes the energy at |x| = {:.6g} by {:.3g}% of the quadratic "
           "one ({:.1f} standard errors), beyond the tolerance {:.3g}%",
           f.halfWidth, 100.0 * f.anharmonicity, f.anharmonicZ, 100.0 * tol);
+    } else if (anchored && !o.linearTerm && secantDrift(points, n, o, f)) {
+      // f.rejection set by secantDrift
     } else {
       for (const WindowResult& a : accepted) {
         const double diff = std::abs(f.stiffness - a.fit.stiffness);
         const double noise = std::hypot(f.standardError, a.fit.standardError);
-        const int dof = a.fit.points - (o.linearTerm ? 3 : 2);  // the smaller window's
+        const int dof = a.fit.points - parameters;  // the smaller window's
         if (diff > tol * a.fit.stiffness && diff > studentCritical(o.zScore, dof) * noise) {
           f.rejection = fmt::format(
               "{} changes from {:.6g} (|x| <= {:.6g}) to {:.6g} (|x| <= {:.6g}): {:.3g}%, beyond the "

@@ -3,6 +3,9 @@
 //
 // Model inside a window |x| <= X around the reference x = 0:
 //   U(x) = U0 + b x + 1/2 k x^2            (b only when FitOptions::linearTerm)
+// U0 is fitted, or (FitOptions::anchorEnergy, bends) anchored at the energy of the undeformed
+// reference: then U(0) is not a free parameter, the points at x = 0 (the reference itself) are
+// left out, and an offset cannot absorb a drift of the curve (docs/beam.md).
 // k is the stiffness: C (stretch, x = strain), K (twist, x = rad per cell) or D (bend,
 // x = 1/R in 1/Bohr), U in Hartree per cell.
 //
@@ -27,6 +30,7 @@
 // of k when the next term is added, trunc^2 = max(0, (k - k_ext)^2 - (sigma_ext^2 - stat^2))
 // (the noise part of that change removed). The window-to-window spread |k - k_previous| is
 // reported beside it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +43,14 @@ struct CurvePoint {
 
 struct FitOptions {
   bool linearTerm = false;         // fit b x as well (reference not exactly at the minimum)
+  // U(0) fixed at this energy (Hartree per cell) instead of fitted; points at x = 0 are dropped.
+  std::optional<double> anchorEnergy;
+  // Anchored fits without the linear term only: standard deviation of one point's energy (Hartree; 0: exact). A window
+  // is also refused when the secant 2 (U - U(0)) / x^2 of its edge point leaves that of its
+  // innermost point by more than the tolerance and 3 of their combined noise (criterion (d),
+  // docs/beam.md): a residual-based noise estimate cannot tell a smooth drift from noise in
+  // small windows, the anchor can.
+  double energyNoise = 0.0;
   double relativeTolerance = 0.02; // tol above
   // Normal z-score of "within noise"; converted to Student's t for the degrees of freedom of
   // each window (small windows know their noise poorly).
@@ -71,7 +83,9 @@ struct QuadraticFit {
   double windowSpread = 0.0;       // |k - k of the previous accepted window| (0 if none)
   double slope = 0.0;              // b (0 when not fitted)
   double slopeError = 0.0;
-  double energy0 = 0.0;            // U0, Hartree
+  double energy0 = 0.0;            // U0, Hartree (the anchor when anchored)
+  bool anchored = false;           // U0 fixed at FitOptions::anchorEnergy
+  int referencePointsDropped = 0;  // points at x = 0 left out because U(0) is anchored
   double windowHalfWidth = 0.0;    // X of the chosen window
   int pointsUsed = 0;
   int pointsTotal = 0;

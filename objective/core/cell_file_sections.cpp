@@ -213,8 +213,14 @@ std::vector<std::pair<int, int>> readWalls(const TomlTable& b) {
 }
 
 ObjectiveCell readMultiWallBuilder(const TomlTable& b) {
-  b.allowOnly({"type", "walls", "bond_length"});
-  return buildMultiWallTranslational(readWalls(b), readBondLength(b));
+  b.allowOnly({"type", "walls", "bond_length", "rotation_order"});
+  long order = 1;
+  if (b.has("rotation_order")) {
+    const char* expected = "an integer >= 1 that divides gcd(n, m) of every wall (the sector of 2 pi / order)";
+    order = b.integer("rotation_order", expected);
+    if (order < 1 || order > 10000) b.fail("rotation_order", std::to_string(order), expected);
+  }
+  return buildMultiWallSector(readWalls(b), readBondLength(b), static_cast<int>(order));
 }
 
 // A positive length in Å (with a default), returned in Bohr.

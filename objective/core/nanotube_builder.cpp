@@ -113,11 +113,20 @@ ObjectiveCell buildNanotubeHelical(int n, int m, double bondLength) {
 }
 
 ObjectiveCell buildNanotubeTranslational(int n, int m, double bondLength, bool useRotation) {
+  return buildNanotubeSector(n, m, bondLength, useRotation ? std::gcd(n, m) : 1);
+}
+
+ObjectiveCell buildNanotubeSector(int n, int m, double bondLength, int order) {
   const NanotubeRollUp tube(n, m, bondLength);
+  if (order < 1 || tube.rotationOrder() % order != 0)
+    throw InputError(kSource, fmt::format("rotation order of the ({}, {}) sector", n, m), std::to_string(order),
+                     fmt::format("a divisor of gcd(n, m) = {} (the rotation by 2 pi / order maps the wall onto "
+                                 "itself only then)",
+                                 tube.rotationOrder()));
   const auto [t1, t2] = tube.translationalVector();
   const long L = static_cast<long>(n) * n + static_cast<long>(n) * m + static_cast<long>(m) * m;
   const long dr = std::gcd(2L * m + n, 2L * n + m);
-  const long na = useRotation ? tube.rotationOrder() : 1;
+  const long na = order;
   // Checked before any atom is placed (a (10000, 9999) cell has 1.2e9 atoms).
   const long atoms = tube.translationalAtomCount() / na;
   if (atoms > kMaxBuiltAtoms)
@@ -159,13 +168,27 @@ ObjectiveCell buildNanotubeTranslational(int n, int m, double bondLength, bool u
 
 ObjectiveCell buildMultiWallTranslational(const std::vector<std::pair<int, int>>& walls,
                                           double bondLength) {
+  return buildMultiWallSector(walls, bondLength, 1);
+}
+
+ObjectiveCell buildMultiWallSector(const std::vector<std::pair<int, int>>& walls, double bondLength,
+                                   int order) {
+  if (order < 1)
+    throw InputError(kSource, "rotation order", std::to_string(order),
+                     "an integer >= 1 that divides gcd(n, m) of every wall");
   if (walls.empty())
     throw InputError(kSource, "walls", "an empty list", "at least one (n, m) wall");
   const NanotubeRollUp first(walls.front().first, walls.front().second, bondLength);
   const double period = first.translationalPeriod();
   std::vector<double> radii;
   ObjectiveCell out;
-  out.symmetry = Symmetry::screw(period, 0.0, 1);
+  out.symmetry = Symmetry::screw(period, 0.0, order);
+  long atoms = 0;
+  for (const auto& [n, m] : walls) atoms += NanotubeRollUp(n, m, bondLength).translationalAtomCount() / std::max(order, 1);
+  if (atoms > kMaxBuiltAtoms)
+    throw InputError(kSource, "walls", fmt::format("{} atoms in one cell", atoms),
+                     fmt::format("at most {} atoms per cell (fewer or smaller walls, or a higher rotation order)",
+                                 kMaxBuiltAtoms));
   for (const auto& [n, m] : walls) {
     const NanotubeRollUp tube(n, m, bondLength);
     if (std::abs(tube.translationalPeriod() - period) > 1e-9 * period)
@@ -183,7 +206,7 @@ ObjectiveCell buildMultiWallTranslational(const std::vector<std::pair<int, int>>
                                      tube.radius() * units::kBohrInAngstrom),
                          "distinct, concentric walls");
     radii.push_back(tube.radius());
-    const ObjectiveCell wall = buildNanotubeTranslational(n, m, bondLength, false);
+    const ObjectiveCell wall = buildNanotubeSector(n, m, bondLength, order);
     for (int a = 0; a < wall.atomCount(); ++a) out.addAtom("C", wall.positions.col(a));
   }
   return out;

@@ -71,9 +71,18 @@ ObjectiveCell buildNanotubeHelical(int n, int m, double bondLength);
 // The translational unit cell (gamma = 0, N_a = 1) with 4 (n^2+nm+m^2)/d_R atoms; with
 // useRotation, N_a = gcd(n, m) and only the atoms of the sector 0 <= phi < 2 pi/N_a.
 ObjectiveCell buildNanotubeTranslational(int n, int m, double bondLength, bool useRotation = false);
+// The sector 0 <= phi < 2 pi / order of the translational cell (gamma = 0, N_a = order): exact
+// (the rotation by 2 pi / order maps the tube onto itself) when order divides gcd(n, m), an
+// InputError otherwise; 4 (n^2+nm+m^2) / (d_R order) atoms.
+ObjectiveCell buildNanotubeSector(int n, int m, double bondLength, int order);
 // Concentric walls sharing one translational period (e.g. (5,5)@(10,10)); gamma = 0, N_a = 1.
 // Incommensurate periods, duplicate walls or walls closer than 1 Å in radius: InputError.
 ObjectiveCell buildMultiWallTranslational(const std::vector<std::pair<int, int>>& walls,
                                           double bondLength);
+// The same walls as one angular sector of 2 pi / order (N_a = order), every wall's own exact
+// sector (order must divide gcd(n, m) of every wall), so the walls carry different numbers of
+// atoms: the C5 sector of (35,35)@(40,40) has 28 + 32 (objective/core/tube_sector_builder.hpp).
+ObjectiveCell buildMultiWallSector(const std::vector<std::pair<int, int>>& walls, double bondLength,
+                                   int order);
 
 }  // namespace mesochain::objective

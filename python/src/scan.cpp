@@ -97,7 +97,9 @@ void bindScan(py::module_& m) {
       .def_readonly("cell", &objective::ScanInput::cell)
       .def_readonly("json_path", &objective::ScanInput::jsonPath)
       .def_readonly("csv_path", &objective::ScanInput::csvPath);
-  m.def("read_scan", &objective::readScanFile, py::arg("path"), "Read a scan file (docs/scan-file.md).");
+  m.def("read_scan", &objective::readScanFile, py::arg("path"), py::arg("output_dir") = "",
+        "Read a scan file (docs/scan-file.md); its [output] paths are relative to output_dir (default the working "
+        "folder, as `mesochain scan -o`).");
   m.def("run_scan", &runScanInput, py::arg("scan"), py::kw_only(), py::arg("resume") = false,
         py::arg("stop_after") = -1, "Run a scan file's scan (with its checkpoint).");
   m.def("scan", &scanCell, py::arg("input"), py::kw_only(), py::arg("kind"),

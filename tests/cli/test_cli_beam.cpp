@@ -131,6 +131,74 @@ TEST(CliBeam, RefusedCurveNamesItsFile) {
   EXPECT_FALSE(fs::exists(dir.path / "out" / "beam.json"));
 }
 
+// Soft-bend rings of issue 15 (R = 19, 9.5, 6.3, 4.75, 3.8 nm; U grows as κ^1.5, the secant
+// 258 eV nm² at 3.8 nm), with or without the straight reference at curvature 0.
+std::string powerLawBendTable(bool withReference) {
+  const double bohrInNm = 0.0529177210903, k0 = bohrInNm / 19.0, kmax = 5 * k0;
+  const double target = 258.0 / (27.211386245988 * bohrInNm * bohrInNm);  // Ha Bohr²
+  const double a = 0.5 * target * std::sqrt(kmax);
+  std::string pts = withReference ? R"({"deformation": 0.0, "energy_hartree": -208.0})" : "";
+  for (int j = 1; j <= 5; ++j)
+    pts += fmt::format("{}{{\"deformation\": {:.17g}, \"energy_hartree\": {:.17g}}}", pts.empty() ? "" : ", ", j * k0,
+                       -208.0 + a * std::pow(j * k0, 1.5));
+  return fmt::format(R"({{"format": 1, "kind": "bend", "direction": "soft", "T0_bohr": 4.678, "atoms_per_cell": 120,
+      "deformation_unit": "per_bohr", "points": [{}]}})", pts);
+}
+
+TEST(CliBeam, BendCurveWarnsWhenTheRingsAreNotQuadratic) {
+  TempDir dir;
+  std::ofstream(dir.path / "rings.json") << powerLawBendTable(true);
+  const fs::path out = dir.path / "curve";
+  std::string log;
+  ASSERT_EQ(run(fmt::format("beam bend-curve {} --window-nm 5,20 -o {}", (dir.path / "rings.json").string(), out.string()),
+                dir.path / "log.txt", log),
+            0)
+      << log;
+  EXPECT_NE(log.find("no quadratic regime in the sampled curvatures"), std::string::npos) << log;
+  EXPECT_NE(log.find("is not in the quadratic regime"), std::string::npos) << log;
+  const json j = readJson(out / "bend-curve.json");
+  ASSERT_EQ(j["points"].size(), 5u);
+  EXPECT_NEAR(j["points"][4]["secant_eV_nm2"].get<double>(), 258.0, 1e-6);
+  EXPECT_NEAR(j["points"][4]["radius_nm"].get<double>(), 3.8, 1e-9);
+  EXPECT_FALSE(j["quadratic_regime"]["verified"].get<bool>());
+  EXPECT_FALSE(j["window"]["quadratic"].get<bool>());
+  EXPECT_EQ(j["window"]["stiffness"]["points"].get<int>(), 3);  // R = 19, 9.5, 6.3 nm
+  EXPECT_TRUE(fs::exists(out / "bend-curve.csv"));
+  expectValidPng((out / "bend-curve.png").string(), 900, 560);
+}
+
+// `beam` on the rings alone: anchored at a given reference the curve is refused (the secant
+// drifts), with U(0) free it is accepted as "all points in the quadratic regime" (what issue 15
+// reports), and without a reference it is fitted free with a warning.
+TEST(CliBeam, AnchoredBendFitRefusesRingsThatAFreeOffsetAccepts) {
+  TempDir dir;
+  std::ofstream(dir.path / "rings.json") << powerLawBendTable(false);
+  const std::string base = fmt::format("beam {} --C-hartree 284 --K-hartree-per-rad2 508 --D-hard-hartree-bohr2 3.27e5 -n 8",
+                                       (dir.path / "rings.json").string());
+  std::string log;
+  EXPECT_EQ(run(base + " --bend-reference-hartree -208.0 -o " + (dir.path / "a").string(), dir.path / "log.txt", log), 2);
+  EXPECT_NE(log.find("rings.json"), std::string::npos) << log;
+  EXPECT_NE(log.find("the secant"), std::string::npos) << log;
+  ASSERT_EQ(run(base + " --bend-offset free -o " + (dir.path / "f").string(), dir.path / "log.txt", log), 0) << log;
+  const json f = readJson(dir.path / "f" / "beam.json");
+  EXPECT_EQ(f["constants"]["D_soft_hartree_bohr2"]["fit"]["note"].get<std::string>(), "all points are in the quadratic regime");
+  EXPECT_EQ(f["constants"]["D_soft_hartree_bohr2"]["offset"].get<std::string>(), "free");
+  ASSERT_EQ(run(base + " -o " + (dir.path / "n").string(), dir.path / "log.txt", log), 0) << log;
+  EXPECT_NE(log.find("warning: "), std::string::npos) << log;
+  EXPECT_NE(log.find("--bend-reference-hartree"), std::string::npos) << log;
+}
+
+TEST(CliBeam, BendCurveWithoutReferenceIsAClearError) {
+  TempDir dir;
+  std::ofstream(dir.path / "rings.json") << powerLawBendTable(false);
+  std::string log;
+  EXPECT_EQ(run(fmt::format("beam bend-curve {} -o {}", (dir.path / "rings.json").string(), (dir.path / "o").string()),
+                dir.path / "log.txt", log),
+            2);
+  EXPECT_NE(log.find("--reference-hartree"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(dir.path / "o" / "bend-curve.json"));
+}
+
 TEST(CliBeam, PlateFromRingScans) {
   TempDir dir;
   // Plate rigidities of N = 1..3 layers between the bounds (a third of the membrane term), per

@@ -153,8 +153,15 @@ TEST_F(BenchKnobs, RingsAtTheScanSettingsReproduceTheCurve) {
   const double direct = fittedFromCurve(dir / "bend.json");
   EXPECT_NEAR(row(r, "angular", "4").at("constant").get<double>(), direct, 1e-9 * direct);
   EXPECT_TRUE(row(r, "angular", "all").at("reference").get<bool>());
-  EXPECT_NE(row(r, "angular", "8").at("constant").get<double>(),
-            row(r, "angular", "4").at("constant").get<double>());
+  // Ring samples alone: the straight reference keeps its 8 kappa points, so the rings' Bloch
+  // phases no longer match it and the bend energies carry a sampling offset. The bend fit is
+  // anchored at the reference (docs/beam.md), so the offset shows as a drifting secant and the
+  // fit is refused, naming it, instead of being absorbed by a free U(0).
+  for (const char* setting : {"8", "all"}) {
+    EXPECT_TRUE(row(r, "angular", setting).at("constant").is_null()) << setting;
+    EXPECT_NE(row(r, "angular", setting).at("note").get<std::string>().find("the secant"), std::string::npos)
+        << setting;
+  }
   // The rings have one kappa point: the knob reaches the straight reference only.
   EXPECT_NE(out.find("only the straight points depend on this knob"), std::string::npos) << out;
   // Joint sampling (straight kappa points K with ring samples M): the scan's own pair (8:4)

@@ -40,6 +40,17 @@ TEST(CellFileBuilders, MultiWallEqualsTheLibraryBuilder) {
   EXPECT_LT((in.cell.positions - ref.positions).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+// rotation_order = 5: the C5 sector of every wall (28 + 32 atoms), as buildMultiWallSector.
+TEST(CellFileBuilders, MultiWallSectorEqualsTheLibraryBuilder) {
+  const CellInput in =
+      readText("[builder]\ntype = \"multiwall\"\nwalls = [[35, 35], [40, 40]]\nrotation_order = 5\n");
+  const ObjectiveCell ref = buildMultiWallSector({{35, 35}, {40, 40}}, 1.42 * units::kAngstromInBohr, 5);
+  ASSERT_EQ(in.cell.atomCount(), 60);
+  ASSERT_EQ(in.cell.atomCount(), ref.atomCount());
+  EXPECT_LT((in.cell.positions - ref.positions).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(in.cell.symmetry.rotationOrder(), 5);
+}
+
 TEST(CellFileBuilders, GrapheneRingEqualsTheLibraryBuilder) {
   const CellInput in = readText(
       "[builder]\ntype = \"graphene_ring\"\nlayers = 3\ndirection = \"armchair\"\n"
@@ -71,6 +82,12 @@ TEST(CellFileBuilders, BadBuilderInputNamesTheKey) {
                     "rotation_order = 100\nspacing = 3.4\n").find("spacing"),
             std::string::npos);
   EXPECT_NE(message("[builder]\ntype = \"helix\"\n").find("type"), std::string::npos);
+  EXPECT_NE(message("[builder]\ntype = \"multiwall\"\nwalls = [[35, 35], [40, 40]]\nrotation_order = 0\n")
+                .find("rotation_order"),
+            std::string::npos);
+  EXPECT_NE(message("[builder]\ntype = \"multiwall\"\nwalls = [[35, 35], [40, 40]]\nrotation_order = 7\n")
+                .find("divisor of gcd"),
+            std::string::npos);
 }
 
 TEST(CellFileBuilders, ChiralGrapheneRingEqualsTheLibraryBuilder) {

@@ -1,0 +1,29 @@
+// `mesochain chain FILE.toml [--stop-after N]`: the scans, beam and bricks of one filament from
+// one file, every stage checkpointed and resumable (app/chain_run.hpp, docs/chain.md).
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "app/chain_run.hpp"
+#include "app/cli_checks.hpp"
+#include "app/commands.hpp"
+
+namespace mesochain::app {
+
+Command makeChainCommand() {
+  auto opt = std::make_shared<ChainOptions>();
+  auto sub = std::make_shared<CLI::App*>(nullptr);
+  Command c;
+  c.attach = [opt, sub](CLI::App& app) {
+    CLI::App* s = app.add_subcommand("chain", "scans -> beam -> bricks of one filament, resumable (docs/chain.md)");
+    s->add_option("file", opt->file, "chain file (TOML)")->required();
+    s->add_option("--stop-after", opt->stopAfter, "compute at most N new scan points, then stop (rerun to resume)")
+        ->check(integerIn(0, 1000000000));
+    *sub = s;
+  };
+  c.selected = [sub] { return *sub && (*sub)->parsed(); };
+  c.run = [opt] { return runChain(*opt); };
+  return c;
+}
+
+}  // namespace mesochain::app
