@@ -197,7 +197,8 @@ int runChain(const ChainOptions& o) {
         rec = {{"input_hash", hash}, {"done", false}, {"seconds", 0.0}};
       }
       writeFileAtomically(scanFile.string(), text);
-      objective::ScanInput in = objective::readScanFile(scanFile.string());
+      // The scan's [output] paths are relative to the chain's folder (as scan -o DIR).
+      objective::ScanInput in = objective::readScanFile(scanFile.string(), c.dir.string());
       in.settings.resume = true;
       in.settings.stopAfter = budget;
       in.settings.progressBar = false;

@@ -88,11 +88,17 @@ void bindCalculation(py::module_& m) {
       .def_readonly("free_energy", &Result::freeEnergy, "Mermin free energy F = E - TS; forces are -dF/dx")
       .def_readonly("total_energy", &Result::totalEnergy)
       .def_readonly("extrapolated_energy", &Result::extrapolatedEnergy, "E - TS/2, the T -> 0 estimate")
-      .def_readonly("band_energy", &Result::bandEnergy)
-      .def_readonly("entropy_term", &Result::entropyTerm, "T S")
-      .def_readonly("repulsive", &Result::repulsive)
-      .def_readonly("dispersion", &Result::dispersion)
-      .def_readonly("scc", &Result::scc)
+      .def_property_readonly("energies", [](const Result& r) {
+            py::dict d;
+            for (const auto& e : r.energies.entries()) d[py::str(e.name)] = e.value;
+            return d;
+          }, "the energy ledger: every built term's entry (Hartree per cell), as energies_hartree in the results JSON")
+      .def_property_readonly("band_energy", [](const Result& r) { return r.energies["band"]; })
+      .def_property_readonly("entropy_term", [](const Result& r) { return r.energies.entropy(); }, "T S")
+      .def_property_readonly("repulsive", [](const Result& r) { return r.energies["repulsive"]; })
+      .def_property_readonly("dispersion", [](const Result& r) { return r.energies["dispersion"]; },
+                             "0 when the cell has no dispersion")
+      .def_property_readonly("scc", [](const Result& r) { return r.energies["scc"]; }, "0 without SCC")
       .def_readonly("dF_dtranslation", &Result::dFdTranslation, "dF/dT (Hartree/Bohr)")
       .def_readonly("dF_dtwist", &Result::dFdTwist, "dF/dgamma (Hartree/rad)")
       .def_readonly("atoms", &Result::atoms)

@@ -44,7 +44,7 @@ def test_scan_file_gives_the_same_curve(tmp_path, stretch):
     inp, result = stretch
     for name in ("scan-stretch-cnt55.toml", "cnt55.toml"):
         shutil.copy(EXAMPLES / name, tmp_path / name)
-    s = mc.read_scan(str(tmp_path / "scan-stretch-cnt55.toml"))
+    s = mc.read_scan(str(tmp_path / "scan-stretch-cnt55.toml"), output_dir=str(tmp_path))
     assert s.cell.helical_kpoints == 64
     # The scan file's cell has 64 k-points; the fixture 16: compare the strains and the shape.
     out = mc.run_scan(s, stop_after=1)

@@ -154,7 +154,7 @@ TEST(MdemMultipleTimeStep, ThreadCountDoesNotChangeTheResult) {
   s.contacts.damping.translational = 0.5;
   s.localDampingAlpha = 0.2;
   s.run.timeStepFraction = 0.5;
-  s.run.outerStepRatio = 3;
+  s.run.outerStepRatio = 2;
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   Simulation one(s);

@@ -281,14 +281,14 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
 }
 
 TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
-  // vdW contacts every 4 steps: checkpoints at multiples of 20 fall on boundary states, the stage
-  // boundary (step 90) and the kills (35, 95, 150) between them; the held outer forces and the
-  // outer cycle come back from the checkpoint.
-  std::string text = stagedScene(90, 110);
-  text.replace(text.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nouter_step_ratio = 4\n");
+  // vdW contacts every 2 steps; the pull stage starts its outer cycle at step 91, so its
+  // checkpoints (100, 140) and the kills (35, 95, 150) fall between boundary states: the held
+  // outer forces and the outer cycle come back from the checkpoint.
+  std::string text = stagedScene(91, 110);
+  text.replace(text.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nouter_step_ratio = 2\n");
   std::ofstream(scenePath_) << text;
   const RunSummary reference = run("reference");
-  ASSERT_EQ(reference.outerStepRatio, 4);
+  ASSERT_EQ(reference.outerStepRatio, 2);
   for (long at : {35L, 95L, 150L}) {
     const std::string out = fmt::format("at{}", at);
     RunOptions kill;
