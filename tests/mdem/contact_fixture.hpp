@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "mdem/contacts/network_generator.hpp"
 #include "mdem/contacts/tube_potential.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/units.hpp"
@@ -115,6 +116,21 @@ inline int addTube(Scene& s, int count, const Vec3& start, const Vec3& direction
   FilamentSpec f;
   f.count = count, f.start = start, f.direction = direction;
   return addFilament(s, f);
+}
+
+// A random network of 60 tubes of 12 elements (720: above the stepper's one-thread threshold)
+// with van der Waals contacts, dashpots and local damping, at half the critical step.
+inline Scene dampedNetworkScene() {
+  Scene s = tubeScene({"bonds", "vdw_contact", "contact_damping", "local_damping"});
+  NetworkSpec n;
+  n.tubes = 60, n.elementsPerTube = 12;
+  n.size = Vec3(80.0, 80.0, 6.0);
+  n.waviness = 0.1, n.minimumGap = 0.2, n.seed = 7;
+  generateNetwork(s, n);
+  s.contacts.damping.translational = 0.5;
+  s.localDampingAlpha = 0.2;
+  s.run.timeStepFraction = 0.5;
+  return s;
 }
 
 }  // namespace mesochain::mdem::testing

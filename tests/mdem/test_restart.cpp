@@ -103,6 +103,25 @@ class Restart : public ::testing::Test {
     EXPECT_EQ(framesA, framesB);
   }
 
+  // The staged scene interrupted after each of `kills` steps and resumed ends as `reference`,
+  // with byte-identical stage outputs.
+  void expectStagedResumesMatch(const RunSummary& reference, std::initializer_list<long> kills) {
+    for (long at : kills) {
+      const std::string out = fmt::format("at{}", at);
+      RunOptions kill;
+      kill.interruptAfter = at;
+      ASSERT_TRUE(run(out, kill).interrupted);
+      RunOptions resume;
+      resume.resume = true;
+      const RunSummary r = run(out, resume);
+      EXPECT_EQ(r.steps, reference.steps) << at;
+      EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
+      EXPECT_EQ(r.finalStress, reference.finalStress) << at;
+      for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
+        EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
+    }
+  }
+
   static constexpr long kSteps = 200, kEvery = 20;
   fs::path dir_;
   std::string scenePath_;
@@ -264,20 +283,7 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   std::getline(csv, header), std::getline(csv, row);
   EXPECT_EQ(row.substr(row.find(',') + 1, 2), "0,") << row;
   // Interrupted inside the relax, just after the boundary's checkpoint, and inside the pull.
-  for (long at : {35L, 90L, 95L, 150L}) {
-    const std::string out = fmt::format("at{}", at);
-    RunOptions kill;
-    kill.interruptAfter = at;
-    ASSERT_TRUE(run(out, kill).interrupted);
-    RunOptions resume;
-    resume.resume = true;
-    const RunSummary r = run(out, resume);
-    EXPECT_EQ(r.steps, reference.steps) << at;
-    EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
-    EXPECT_EQ(r.finalStress, reference.finalStress) << at;
-    for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
-      EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
-  }
+  expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
 }
 
 TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
@@ -289,20 +295,7 @@ TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
   std::ofstream(scenePath_) << text;
   const RunSummary reference = run("reference");
   ASSERT_EQ(reference.outerStepRatio, 2);
-  for (long at : {35L, 95L, 150L}) {
-    const std::string out = fmt::format("at{}", at);
-    RunOptions kill;
-    kill.interruptAfter = at;
-    ASSERT_TRUE(run(out, kill).interrupted);
-    RunOptions resume;
-    resume.resume = true;
-    const RunSummary r = run(out, resume);
-    EXPECT_EQ(r.steps, reference.steps) << at;
-    EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total()) << at;
-    EXPECT_EQ(r.finalStress, reference.finalStress) << at;
-    for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
-      EXPECT_EQ(slurp(dir_ / "reference" / f), slurp(dir_ / out / f)) << f << " interrupted at " << at;
-  }
+  expectStagedResumesMatch(reference, {35L, 95L, 150L});
 }
 
 TEST_F(Restart, StageErrorsNameTheKey) {

@@ -141,15 +141,7 @@ TEST(MdemStepper, FusedStepEqualsThePlainStep) {
 TEST(MdemStepper, ContactsInTheParallelRegionAreThreadIndependent) {
   // A random network with van der Waals contacts, dashpots and local damping: the contact
   // phases (neighbour list, pairs, dissipated work) run inside the stepper's region.
-  Scene s = tubeScene({"bonds", "vdw_contact", "contact_damping", "local_damping"});
-  NetworkSpec n;
-  n.tubes = 60, n.elementsPerTube = 12;
-  n.size = Vec3(80.0, 80.0, 6.0);
-  n.waviness = 0.1, n.minimumGap = 0.2, n.seed = 7;
-  generateNetwork(s, n);
-  s.contacts.damping.translational = 0.5;
-  s.localDampingAlpha = 0.2;
-  s.run.timeStepFraction = 0.5;
+  Scene s = dampedNetworkScene();
   ASSERT_GT(s.bodies.size(), kSmallScene);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
