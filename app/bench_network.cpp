@@ -94,21 +94,6 @@ Measurement measure(const mdem::Scene& scene, double seconds, long fixedSteps) {
   m.pairs = sim.contactNeighbourhood() ? static_cast<long>(sim.contactNeighbourhood()->list().pairs().size()) : 0;
   return m;
 }
-// Element-steps per second of wall time of any scene (no effect required).
-double stepRate(const mdem::Scene& scene, double seconds) {
-  mdem::Simulation sim(scene);
-  sim.run(5);
-  long steps = 0;
-  const auto t0 = std::chrono::steady_clock::now();
-  double elapsed = 0.0;
-  while (elapsed < seconds) {
-    sim.run(5);
-    steps += 5;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-  return static_cast<double>(steps) * scene.bodies.size() / elapsed;
-}
-
 // The promise "an effect not named costs nothing" measured: the same network (same bodies and
 // bonds) with the contact effects named or not. A scene that does not name them builds no
 // neighbour list and no contact loop, so it runs at the bonded-chain rate of `bench dem`.
@@ -122,7 +107,8 @@ void printEffectsCost(const NetworkBenchOptions& o) {
   double base = 0.0;
   for (const auto& list : lists) {
     s.effects = list;
-    const double rate = stepRate(s, o.seconds);
+    mdem::Simulation sim(s);
+    const double rate = elementStepRate(sim, o.seconds);
     if (base == 0.0) base = rate;
     std::string names;
     for (const auto& e : list) names += (names.empty() ? "" : " + ") + e;

@@ -12,10 +12,7 @@
 
 namespace mesochain::app {
 
-namespace {
-
-// Element-steps per second of wall time over `seconds`, after a warm-up.
-double rateOf(mdem::Simulation& sim, double seconds) {
+double elementStepRate(mdem::Simulation& sim, double seconds) {
   sim.run(8);
   long steps = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -27,6 +24,8 @@ double rateOf(mdem::Simulation& sim, double seconds) {
   }
   return static_cast<double>(steps) * sim.bodies().size() / elapsed;
 }
+
+namespace {
 
 struct Accuracy {
   double energyError = 0.0;  // largest |E(t) - E(0)|, zJ
@@ -80,7 +79,7 @@ int printOuterRatioCurve(const mdem::Scene& scene, const std::vector<int>& ratio
     s.run.outerStepRatio = ratio;
     try {
       mdem::Simulation sim(s);
-      const double rate = rateOf(sim, seconds);
+      const double rate = elementStepRate(sim, seconds);
       const double nsPerHour = rate / n * sim.timeStep() * 3600.0;
       // The accuracy run at the common step (refused when the ratio does not fit the limit).
       std::string accuracy = "(outer step above the limit at the common h)";

@@ -7,8 +7,12 @@
 #include <vector>
 
 #include "mdem/scene.hpp"
+#include "mdem/simulation.hpp"
 
 namespace mesochain::app {
+
+// Element-steps per second of wall time of `sim` over `seconds`, after a warm-up of 8 steps.
+double elementStepRate(mdem::Simulation& sim, double seconds);
 
 // `scene` names its effects and time_step_fraction; ratios that exceed the contacts' own
 // critical step are reported as refused. Returns 0.

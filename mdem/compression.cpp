@@ -211,12 +211,7 @@ void CompressionRecorder::saveState(BinaryWriter& out) const {
   for (const CompressionSample& s : samples_) {
     for (double v : {s.time, s.strain, s.gap, s.thickness, s.loadBottom, s.loadTop, s.pressure, s.plateWork}) out.write(v);
     out.write<std::int32_t>(s.cycle), out.write<std::int32_t>(static_cast<std::int32_t>(s.phase));
-    out.write<std::uint64_t>(s.energies.entries().size());
-    for (const LedgerEntry& e : s.energies.entries()) {
-      out.write(e.name);
-      out.write<std::int32_t>(static_cast<std::int32_t>(e.kind));
-      out.write(e.value);
-    }
+    writeLedger(out, s.energies);
   }
   out.write<std::uint64_t>(cycles_.size());
   for (const CycleRecord& r : cycles_) {
@@ -237,13 +232,7 @@ void CompressionRecorder::loadState(BinaryReader& in) {
     const int phase = in.read<std::int32_t>();
     if (phase < 0 || phase > 3) in.fail("a compression sample of unknown phase");
     s.phase = static_cast<PlatePhase>(phase);
-    const std::uint64_t entries = in.read<std::uint64_t>();
-    for (std::uint64_t e = 0; e < entries; ++e) {
-      const std::string name = in.read<std::string>();
-      const int kind = in.read<std::int32_t>();
-      if (kind < 0 || kind > 2) in.fail("an energy entry of unknown kind");
-      s.energies.add(name, static_cast<EnergyKind>(kind), in.read<double>());
-    }
+    s.energies = readLedger(in);
     samples_.push_back(std::move(s));
   }
   const std::uint64_t m = in.read<std::uint64_t>();

@@ -48,4 +48,11 @@ class EnergyLedger {
   std::vector<LedgerEntry> entries_;
 };
 
+class BinaryWriter;
+class BinaryReader;
+// A ledger in checkpoints (time series samples): entry count, then name, kind, value per entry;
+// an unknown kind is the reader's failure (naming the checkpoint).
+void writeLedger(BinaryWriter& out, const EnergyLedger& ledger);
+EnergyLedger readLedger(BinaryReader& in);
+
 }  // namespace mesochain::mdem

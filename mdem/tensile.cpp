@@ -230,12 +230,7 @@ void TensileRecorder::saveState(BinaryWriter& out) const {
     out.write<std::int32_t>(s.contacts), out.write<std::int32_t>(s.aligned);
     out.write<std::int32_t>(s.bundles), out.write<std::int32_t>(s.largestBundle);
     out.write(s.meanBundle), out.write(s.orderParameter), out.write(s.axisAlignment);
-    out.write<std::uint64_t>(s.energies.entries().size());
-    for (const LedgerEntry& e : s.energies.entries()) {
-      out.write(e.name);
-      out.write<std::int32_t>(static_cast<std::int32_t>(e.kind));
-      out.write(e.value);
-    }
+    writeLedger(out, s.energies);
   }
 }
 
@@ -249,13 +244,7 @@ void TensileRecorder::loadState(BinaryReader& in) {
     s.contacts = in.read<std::int32_t>(), s.aligned = in.read<std::int32_t>();
     s.bundles = in.read<std::int32_t>(), s.largestBundle = in.read<std::int32_t>();
     s.meanBundle = in.read<double>(), s.orderParameter = in.read<double>(), s.axisAlignment = in.read<double>();
-    const std::uint64_t entries = in.read<std::uint64_t>();
-    for (std::uint64_t e = 0; e < entries; ++e) {
-      const std::string name = in.read<std::string>();
-      const int kind = in.read<std::int32_t>();
-      if (kind < 0 || kind > 2) in.fail("an energy entry of unknown kind");
-      s.energies.add(name, static_cast<EnergyKind>(kind), in.read<double>());
-    }
+    s.energies = readLedger(in);
     samples_.push_back(std::move(s));
   }
   if (!samples_.empty()) columns_ = energyColumns(samples_.front().energies);
