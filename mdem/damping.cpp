@@ -20,8 +20,9 @@ void LocalDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque
   const double a = alpha_;
   for (int d = 0; d < 3; ++d) force[d] -= a * std::abs(force[d]) * sign(s.velocity[i][d]);
   Vec3 tb = rotateInverse(s.orientation[i], torque);
-  const Vec3 wb = s.angularVelocityBody(i);
-  for (int d = 0; d < 3; ++d) tb[d] -= a * std::abs(tb[d]) * sign(wb[d]);
+  // sign(omega_body) = sign(L_body): the principal moments are positive (no division needed).
+  const Vec3& lb = s.angularMomentumBody[i];
+  for (int d = 0; d < 3; ++d) tb[d] -= a * std::abs(tb[d]) * sign(lb[d]);
   torque = rotate(s.orientation[i], tb);
 }
 

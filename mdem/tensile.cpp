@@ -58,6 +58,16 @@ void setUpTensile(Scene& s) {
     if (std::count(t.leftGrip.begin(), t.leftGrip.end(), p.element) || std::count(t.rightGrip.begin(), t.rightGrip.end(), p.element))
       throw InputError(s.source, "key tensile.grip_width_nm", fmt::format("element {} in a grip and in [[prescribed]]", p.element),
                        "grip elements without other constraints");
+  // The contact counts come from the contacts' neighbour list, which holds every pair whose axis
+  // segments are closer than its axis range (2 R + the largest cut-off gap of those named).
+  const auto named = [&](const char* e) { return std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end(); };
+  double listed = 0.0, radius = 0.0;
+  if (named("vdw_contact")) listed = std::max(listed, VdwContactEffect::axisRange(s));
+  if (named("contact_damping")) listed = std::max(listed, ContactDampingEffect::axisRange(s));
+  for (const ElementType& e : s.elementTypes) radius = std::max(radius, e.contactRadius());
+  if (listed > 0.0 && 2.0 * radius + t.contactGap > listed)
+    throw InputError(s.source, "key tensile.contact_gap_nm", fmt::format("{:.6g} nm", t.contactGap),
+                     fmt::format("at most {:.4g} nm (the contacts' reach beyond the walls)", listed - 2.0 * radius));
   if (!(t.crossSection > 0.0)) {
     if (s.filmSize.isZero())
       throw InputError(s.source, "key tensile.cross_section_nm2", "nothing (and no [network] film)",

@@ -39,23 +39,29 @@ double wallGap(const Segment& a, const Segment& b, double ra, double rb) {
   return (a.centre + sa * a.axis - b.centre - sb * b.axis).norm() - ra - rb;
 }
 
-ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,
-                                 double ra, double rb, const Vec3& va, const Vec3& wa, const Vec3& vb,
-                                 const Vec3& wb) {
-  ContactPairResult r;
+DashpotContact dashpotContact(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double ra,
+                              double rb) {
+  DashpotContact k;
   double sa, sb;
   closestPoints(a, b, &sa, &sb);
   const Vec3 pa = a.centre + sa * a.axis, pb = b.centre + sb * b.axis;
   const double gap = (pa - pb).norm() - ra - rb;
-  if (gap >= spec.cutoffGap) return r;
+  if (gap >= spec.cutoffGap) return k;
   double weight = 1.0;
   if (gap > spec.fullGap) {
     const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
     weight = 1.0 - x * x * (3.0 - 2.0 * x);
   }
-  const double lw = weight * contactLength(a, b, ra, rb);
-  if (lw <= 0.0) return r;
-  const Vec3 c = 0.5 * (pa + pb);
+  k.weightedLength = std::max(0.0, weight * contactLength(a, b, ra, rb));
+  k.point = 0.5 * (pa + pb);
+  return k;
+}
+
+ContactPairResult dashpotForces(const ContactDampingSpec& spec, const DashpotContact& k, const Segment& a,
+                                const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb) {
+  ContactPairResult r;
+  const double lw = k.weightedLength;
+  const Vec3& c = k.point;
   const Vec3 vrel = (vb + wb.cross(c - b.centre)) - (va + wa.cross(c - a.centre));
   r.forceA = spec.translational * lw * vrel;
   r.forceB = -r.forceA;
@@ -63,6 +69,14 @@ ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& 
   r.torqueA = (c - a.centre).cross(r.forceA) + mr;
   r.torqueB = (c - b.centre).cross(r.forceB) - mr;
   return r;
+}
+
+ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,
+                                 double ra, double rb, const Vec3& va, const Vec3& wa, const Vec3& vb,
+                                 const Vec3& wb) {
+  const DashpotContact k = dashpotContact(spec, a, b, ra, rb);
+  if (k.weightedLength <= 0.0) return {};
+  return dashpotForces(spec, k, a, b, va, wa, vb, wb);
 }
 
 }  // namespace mesochain::mdem

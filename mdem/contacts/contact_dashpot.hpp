@@ -25,6 +25,19 @@ double wallGap(const Segment& a, const Segment& b, double ra, double rb);
 // Contact length lambda and weight s (see above).
 double contactLength(const Segment& a, const Segment& b, double radiusA, double radiusB);
 
+// Where and how strongly the dashpot acts: the contact point c and lambda s (zero beyond the
+// cut-off gap: then the pair has no dashpot and its velocities need not be formed).
+struct DashpotContact {
+  Vec3 point = Vec3::Zero();
+  double weightedLength = 0.0;  // lambda s, nm
+};
+DashpotContact dashpotContact(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double radiusA,
+                              double radiusB);
+// The forces and torques of a contact with weightedLength > 0.
+ContactPairResult dashpotForces(const ContactDampingSpec& spec, const DashpotContact& contact, const Segment& a,
+                                const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb);
+
+// Both in one call.
 ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,
                                  double radiusA, double radiusB, const Vec3& va, const Vec3& wa,
                                  const Vec3& vb, const Vec3& wb);

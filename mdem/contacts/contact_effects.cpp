@@ -73,19 +73,25 @@ std::shared_ptr<ContactNeighbourhood> sharedNeighbourhood(EffectBuild& b, bool* 
   return b.shared<ContactNeighbourhood>("contact_neighbourhood", [&] {
     *owner = true;
     validateContactSpec(b.scene);
-    double range = 0.0;
-    if (b.named("vdw_contact")) range = std::max(range, VdwContactEffect::interactionRange(b.scene));
-    if (b.named("contact_damping")) range = std::max(range, ContactDampingEffect::interactionRange(b.scene));
-    return std::make_shared<ContactNeighbourhood>(b.scene, range);
+    double range = 0.0, axis = 0.0;
+    if (b.named("vdw_contact")) {
+      range = std::max(range, VdwContactEffect::interactionRange(b.scene));
+      axis = std::max(axis, VdwContactEffect::axisRange(b.scene));
+    }
+    if (b.named("contact_damping")) {
+      range = std::max(range, ContactDampingEffect::interactionRange(b.scene));
+      axis = std::max(axis, ContactDampingEffect::axisRange(b.scene));
+    }
+    return std::make_shared<ContactNeighbourhood>(b.scene, range, axis);
   });
 }
 }  // namespace
 
-ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range)
+ContactNeighbourhood::ContactNeighbourhood(const Scene& scene, double range, double axisRange)
     : periodicity_(scene.periodic),
       topology_(buildTopology(scene.bodies.size(), scene.bonds, scene.contacts.excludeWithin,
                               scene.contacts.closedFilaments)),
-      list_(range, scene.contacts.skin, scene.periodic) {
+      list_(range, scene.contacts.skin, scene.periodic, axisRange) {
   for (const ElementType& t : scene.elementTypes) {
     halfLength_.push_back(0.5 * t.length);
     radius_.push_back(t.contactRadius());
@@ -197,11 +203,22 @@ double VdwContactEffect::interactionRange(const Scene& s) {
   return range;
 }
 
+double VdwContactEffect::axisRange(const Scene& s) {
+  if (!s.contacts.vdw.anisotropic) return std::numeric_limits<double>::infinity();
+  double radius = 0.0;
+  for (const ElementType& t : s.elementTypes) {
+    if (t.shape == Shape::Brick) return std::numeric_limits<double>::infinity();
+    radius = std::max(radius, t.radius);
+  }
+  // The kernels' own early out (segmentCutDistance), with the pair potentials' d_c = R_a + R_b + g_c.
+  return segmentCutDistance(2.0 * radius + s.contacts.vdw.cutoffGap, TubePairPotential::kDefaultGridStep);
+}
+
 const TubePairPotential* VdwContactEffect::potential(int a, int b) const {
   return types_[std::min(a, b) * typeCount_ + std::max(a, b)].potential.get();
 }
 
-ContactPairResult VdwContactEffect::pair(const Bodies& b, int i, int j) const {
+ContactPairResult VdwContactEffect::evaluatePair(const Bodies& b, int i, int j) const {
   const TypePair& tp = types_[std::min(b.type[i], b.type[j]) * typeCount_ + std::max(b.type[i], b.type[j])];
   // Quadrature side: the element of the lower filament (then the lower index), so that a tube
   // sliding along another is always integrated the same way (no corrugation).
@@ -225,7 +242,7 @@ void VdwContactEffect::prepare(const State& state, double) {
 
 void VdwContactEffect::computeItems(const State& state, double, int lo, int hi) {
   const auto& pairs = nb_->list().pairs();
-  for (int p = lo; p < hi; ++p) results_[p] = pair(state.bodies, pairs[p].first, pairs[p].second);
+  for (int p = lo; p < hi; ++p) results_[p] = evaluatePair(state.bodies, pairs[p].first, pairs[p].second);
 }
 
 void VdwContactEffect::gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const {
@@ -238,7 +255,7 @@ void VdwContactEffect::reportEnergy(const State& state, EnergyLedger& ledger) co
   const int np = static_cast<int>(pairs.size());
   std::vector<double> e(np);
 #pragma omp parallel for schedule(dynamic, 256) if (np > 256)
-  for (int p = 0; p < np; ++p) e[p] = pair(s, pairs[p].first, pairs[p].second).energy;
+  for (int p = 0; p < np; ++p) e[p] = evaluatePair(s, pairs[p].first, pairs[p].second).energy;
   double sum = 0.0;  // in pair order: independent of the thread count
   for (double x : e) sum += x;
   ledger.add("vdw", EnergyKind::Potential, sum);
@@ -246,7 +263,7 @@ void VdwContactEffect::reportEnergy(const State& state, EnergyLedger& ledger) co
 
 void VdwContactEffect::addElementEnergies(const State& state, std::vector<double>& perElement) const {
   for (const auto& [i, j] : nb_->list().pairs()) {
-    const double e = pair(state.bodies, i, j).energy;
+    const double e = evaluatePair(state.bodies, i, j).energy;
     perElement[i] += 0.5 * e, perElement[j] += 0.5 * e;
   }
 }
@@ -266,6 +283,11 @@ ContactDampingEffect::ContactDampingEffect(const Scene& scene, std::shared_ptr<C
 
 double ContactDampingEffect::interactionRange(const Scene& s) {
   return 2.0 * maxRadius(s) + s.contacts.damping.cutoffGap + 2.0 * maxHalfLength(s);
+}
+
+double ContactDampingEffect::axisRange(const Scene& s) {
+  // contactDashpot is zero beyond a wall gap of cutoff_gap_nm between the axis segments.
+  return 2.0 * maxRadius(s) + s.contacts.damping.cutoffGap;
 }
 
 bool ContactDampingEffect::refreshesList(const Scene& scene, bool owner) {
@@ -293,10 +315,14 @@ void ContactDampingEffect::computeItems(const State& state, double, int lo, int 
   for (int p = lo; p < hi; ++p) {
     const int i = pairs[p].first, j = pairs[p].second;
     const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
+    const DashpotContact k = dashpotContact(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]));
+    if (k.weightedLength <= 0.0) {  // listed but beyond the cut-off: no velocities needed
+      results_[p] = ContactPairResult{};
+      power_[p] = 0.0;
+      continue;
+    }
     const Vec3 wi = s.angularVelocityWorld(i), wj = s.angularVelocityWorld(j);
-    const ContactPairResult& r = results_[p] = contactDashpot(spec_, a, b, nb_->radius(s.type[i]),
-                                                               nb_->radius(s.type[j]), s.velocity[i], wi,
-                                                               s.velocity[j], wj);
+    const ContactPairResult& r = results_[p] = dashpotForces(spec_, k, a, b, s.velocity[i], wi, s.velocity[j], wj);
     power_[p] = -(r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj));
   }
 }

@@ -6,6 +6,7 @@
 //
 // Kernels run in parallel over the pairs into a per-pair buffer; each element then gathers its
 // pairs' contributions in a fixed order, so results do not depend on the number of threads.
+#include <limits>
 #include <map>
 #include <memory>
 #include <utility>
@@ -23,7 +24,9 @@ namespace mesochain::mdem {
 
 class ContactNeighbourhood {
  public:
-  ContactNeighbourhood(const Scene& scene, double interactionRange);
+  // `interactionRange`, `axisRange`: as NeighbourList's (centre and axis-segment distances).
+  ContactNeighbourhood(const Scene& scene, double interactionRange,
+                       double axisRange = std::numeric_limits<double>::infinity());
   // Refreshes the list when needed; cheap otherwise.
   void update(const Bodies& b) { list_.update(b, halfLength_, topology_); }
   const NeighbourList& list() const { return list_; }
@@ -71,14 +74,19 @@ class VdwContactEffect : public Effect {
 
   // Largest centre distance at which two elements of the scene interact.
   static double interactionRange(const Scene& scene);
+  // Largest distance of the closest points of two axis segments at which the anisotropic tube
+  // contact can be nonzero (its early-out distance, vdw_contact.hpp); infinite for the isotropic
+  // form (centre distance) and for bricks.
+  static double axisRange(const Scene& scene);
   // Tube types: the pair potential (null for bricks). Bricks: the face-to-face model (null for tubes).
   const TubePairPotential* potential(int typeA, int typeB) const;
   const FaceContactModel* faceModel() const { return face_.get(); }
   const ContactNeighbourhood& neighbourhood() const { return *nb_; }
   long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
+  // The contact of elements i and j (j at the minimum image next to i), whether listed or not.
+  ContactPairResult evaluatePair(const Bodies& b, int i, int j) const;
 
  private:
-  ContactPairResult pair(const Bodies& b, int i, int j) const;
   // InputError naming the elements when two start inside each other.
   void checkInitialOverlaps() const;
   struct TypePair {
@@ -119,6 +127,8 @@ class ContactDampingEffect : public Effect {
   void saveState(BinaryWriter& out) const override;
   void loadState(BinaryReader& in) override;
   static double interactionRange(const Scene& scene);
+  // The dashpot vanishes beyond a wall gap of cutoff_gap_nm: 2 R_max + that gap.
+  static double axisRange(const Scene& scene);
 
  private:
   static bool refreshesList(const Scene& scene, bool owner);

@@ -102,7 +102,8 @@ inline double BicubicTable::eval(double x, double y, double* fx, double* fy) con
 // The coarse-grained interaction of one pair of tube kinds (steps 1-4), built once.
 class TubePairPotential {
  public:
-  explicit TubePairPotential(const TubePairSpec& spec, double gridStep = 0.005);
+  static constexpr double kDefaultGridStep = 0.005;  // nm
+  explicit TubePairPotential(const TubePairSpec& spec, double gridStep = kDefaultGridStep);
 
   const TubePairSpec& spec() const { return spec_; }
   // Axis distance beyond which everything vanishes: R1 + R2 + g_c.

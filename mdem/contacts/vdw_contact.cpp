@@ -8,10 +8,10 @@
 namespace mesochain::mdem {
 
 namespace {
-// Early-out distance of the axis segments: d_c + 3 table steps. A quadrature point at distance
+// Early-out distance of the axis segments (segmentCutDistance): a quadrature point at distance
 // rho from segment b evaluates cells whose node data come from rows within sqrt(5) steps of
 // (h, u) (the cell corners and the central-difference slopes of H); beyond d_c those are all zero.
-double farCut(const TubePairPotential& p) { return p.cutoffDistance() + 3.0 * p.gridStep(); }
+double farCut(const TubePairPotential& p) { return segmentCutDistance(p.cutoffDistance(), p.gridStep()); }
 
 // The tolerance search stops here: against the 64-point reference, a larger rule is not checked.
 constexpr int kMaxPoints = 48;

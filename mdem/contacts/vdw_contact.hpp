@@ -36,6 +36,11 @@ struct Segment {
   double halfLength = 0.0;
 };
 
+// Early-out distance of the axis segments of the anisotropic kernels: d_c + 3 table steps (d_c the
+// axis distance at which the pair potential vanishes, `gridStep` its tables' step). Beyond it
+// every kernel returns exactly zero; the neighbour list uses it as its axis range.
+inline double segmentCutDistance(double cutoffDistance, double gridStep) { return cutoffDistance + 3.0 * gridStep; }
+
 struct ContactPairResult {
   double energy = 0.0;
   Vec3 forceA = Vec3::Zero(), torqueA = Vec3::Zero();
