@@ -21,6 +21,7 @@
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"
+#include "mdem/contacts/network_structure.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
@@ -44,6 +45,7 @@ struct NetworkBenchOptions {
   std::string kernelPath = "table";  // "table" (one lookup of D per point) or "line" (three of H)
   std::vector<int> outerRatios;      // non-empty: the multiple-time-stepping curve and exit
   std::string scene;                 // a scene file instead of the generated networks
+  double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -94,6 +96,42 @@ Measurement measure(const mdem::Scene& scene, double seconds, long fixedSteps) {
   m.pairs = sim.contactNeighbourhood() ? static_cast<long>(sim.contactNeighbourhood()->list().pairs().size()) : 0;
   return m;
 }
+// Contacts (wall gap < 0.5 nm) and aligned contacts (< 10 degrees) per element, listed pairs per
+// element and the largest bundle of the current state of `sim`.
+std::string contactSummary(const mdem::Simulation& sim) {
+  const mdem::ContactNeighbourhood* nb = sim.contactNeighbourhood();
+  if (!nb) return "no contacts named";
+  const mdem::Bodies& b = sim.state().bodies;
+  const mdem::NetworkStructure n = mdem::networkStructure(*nb, b, 0.5, 10.0 * mdem::units::kPi / 180.0, 0);
+  const double e = b.size();
+  return fmt::format("{:.3f} contacts, {:.3f} aligned, {:.3f} listed pairs per element; largest bundle {} elements",
+                     n.contacts / e, n.aligned / e, nb->list().pairs().size() / e, n.largestBundle);
+}
+
+// The bundled case: the scene relaxed for `ns` with local damping (alpha of the scene, added when
+// not named), its final positions, orientations and velocities taken as the new start.
+mdem::Scene relaxedScene(mdem::Scene s, double ns) {
+  if (std::find(s.effects.begin(), s.effects.end(), "local_damping") == s.effects.end())
+    s.effects.push_back("local_damping");
+  mdem::Simulation sim(s);
+  const long steps = std::max(1L, std::lround(ns / sim.timeStep()));
+  std::cout << fmt::format("relaxing {} elements for {:.4g} ns ({} steps of {:.4g} ns, local damping {:.3g})\n  before: {}\n",
+                           s.bodies.size(), ns, steps, sim.timeStep(), s.localDampingAlpha, contactSummary(sim))
+            << std::flush;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long done = 0; done < steps;) {
+    const long chunk = std::min(steps - done, std::max(1L, steps / 10));
+    sim.run(chunk);
+    done += chunk;
+    std::cout << fmt::format("  {:3.0f} %  t = {:.4g} ns  {:.0f} s\n", 100.0 * done / steps, sim.time(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count())
+              << std::flush;
+  }
+  std::cout << "  after:  " << contactSummary(sim) << "\n";
+  s.bodies = sim.state().bodies;
+  return s;
+}
+
 // The promise "an effect not named costs nothing" measured: the same network (same bodies and
 // bonds) with the contact effects named or not. A scene that does not name them builds no
 // neighbour list and no contact loop, so it runs at the bonded-chain rate of `bench dem`.
@@ -287,16 +325,21 @@ Command makeBenchNetworkCommand() {
                        "a scene file (e.g. a deposited film) instead of the generated networks: its bodies, effects "
                        "and [run] time step")
         ->check(CLI::ExistingFile);
+    (*sub)->add_option("--relax-ns", opt->relaxNs,
+                       "relax the network or scene for this long first (local damping; the bundled case), then measure")
+        ->check(CLI::PositiveNumber);
     (*sub)->add_option("--kernel-path", opt->kernelPath, "with --kernel-points: table (D, one lookup) or line (H, three)")
         ->check(CLI::IsMember({"table", "line"}));
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
     if (opt->kernelCurve) return printKernelCurve(*opt);
-    if (!opt->outerRatios.empty())
-      return printOuterRatioCurve(
-          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene),
-          opt->outerRatios, opt->seconds, opt->threads);
+    if (!opt->outerRatios.empty()) {
+      mdem::Scene s =
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);
+      if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs);
+      return printOuterRatioCurve(s, opt->outerRatios, opt->seconds, opt->threads);
+    }
     if (!opt->lammps.empty()) {
       for (int total : opt->totals) {
         const mdem::Scene s = networkScene(total, opt->tubeLength, true);
@@ -308,11 +351,13 @@ Command makeBenchNetworkCommand() {
       }
       return 0;
     }
-    std::cout << "elements  tubes  pairs     threads  element-steps/s  neighbour-search  vdw-contact (items + gather, first thread)\n";
     std::vector<mdem::Scene> scenes;
     if (!opt->scene.empty()) scenes.push_back(mdem::loadScene(opt->scene));
     else
       for (int total : opt->totals) scenes.push_back(networkScene(total, opt->tubeLength, opt->isotropic));
+    if (opt->relaxNs > 0.0)
+      for (mdem::Scene& s : scenes) s = relaxedScene(std::move(s), opt->relaxNs);
+    std::cout << "elements  tubes  pairs     threads  element-steps/s  neighbour-search  vdw-contact (items + gather, first thread)\n";
     for (const mdem::Scene& s : scenes) {
       // Tubes: elements minus bonds for chains (a filament of n elements has n - 1 bonds).
       const int tubes = s.bodies.size() - static_cast<int>(s.bonds.size());

@@ -4,8 +4,11 @@
 // length); the grips' work equals the change of the total energy (energy decomposition closes).
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <gtest/gtest.h>
+
+#include "common/errors.hpp"
 
 #include "contact_fixture.hpp"
 #include "mdem/tensile.hpp"
@@ -107,6 +110,28 @@ TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
   EXPECT_NEAR(parts, e.total(), 1e-9 * std::abs(e.total()));
   EXPECT_GT(last.gripWork, 0.0);
   EXPECT_NEAR(change, last.gripWork, 0.01 * last.gripWork);
+}
+
+TEST(MdemTensile, ContactGapBeyondTheNeighbourListsReachIsAClearError) {
+  // Contacts are counted from the contacts' neighbour list, which reaches 2 R + 1.2 nm (+ 3 table
+  // steps) between the axes with vdw_contact: a wall gap of 1.2 nm is covered, 1.3 nm is not.
+  for (double gap : {1.2, 1.3}) {
+    Scene s = tubeScene({"bonds", "vdw_contact"});
+    addTube(s, 12, Vec3::Zero(), Vec3::UnitX());
+    s.tensile.enabled = true, s.tensile.gripWidth = 3.0, s.tensile.strainRate = 1.0, s.tensile.crossSection = kFilm;
+    s.tensile.contactGap = gap;
+    if (gap < 1.25) {
+      EXPECT_NO_THROW(setUpTensile(s));
+      continue;
+    }
+    try {
+      setUpTensile(s);
+      ADD_FAILURE() << "no error for contact_gap_nm = " << gap;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("tensile.contact_gap_nm"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("1.3 nm"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
