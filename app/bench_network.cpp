@@ -120,7 +120,7 @@ mdem::Scene relaxedScene(mdem::Scene s, double ns) {
             << std::flush;
   const auto t0 = std::chrono::steady_clock::now();
   for (long done = 0; done < steps;) {
-    const long chunk = std::min(steps - done, std::max(1L, steps / 10));
+    const long chunk = std::min(steps - done, (steps + 9) / 10);
     sim.run(chunk);
     done += chunk;
     std::cout << fmt::format("  {:3.0f} %  t = {:.4g} ns  {:.0f} s\n", 100.0 * done / steps, sim.time(),

@@ -53,13 +53,15 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
       h_(scene.run.timeStep),
       steps_(startStep),
       cycleStart_(startStep) {
-  const std::vector<char> outer = outerGroup(scene, effects_);
-  const bool split = std::find(outer.begin(), outer.end(), 1) != outer.end();
+  std::vector<char> outer = outerGroup(scene, effects_);
+  bool split = std::find(outer.begin(), outer.end(), 1) != outer.end();
   // Stability: the inner step against everything but the outer group, the outer step against
-  // the outer group alone (stability.hpp).
+  // the outer group alone (stability.hpp); `allTerms`: every effect on every step.
   std::vector<ContactStabilityTerms> innerTerms(scene.elementTypes.size()), outerTerms(scene.elementTypes.size());
+  std::vector<ContactStabilityTerms> allTerms(scene.elementTypes.size());
   for (std::size_t k = 0; k < effects_.size(); ++k) {
     effects_[k]->addStabilityTerms(outer[k] ? outerTerms : innerTerms);
+    effects_[k]->addStabilityTerms(allTerms);
     if (outer[k]) outerNames_.push_back(effects_[k]->name());
   }
   limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, innerTerms);
@@ -78,14 +80,40 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
   } else {
     outerLimit_.criticalTimeStep = HUGE_VAL;
   }
-  if (scene.run.timeStepFraction > 0.0) {
-    if (scene.run.timeStepFraction > 1.0)
+  const double fraction = scene.run.timeStepFraction;
+  if (fraction > 0.0) {
+    if (fraction > 1.0)
       throw InputError(scene.source, "key run.time_step_fraction",
-                       fmt::format("{}", scene.run.timeStepFraction), "a fraction in (0, 1]");
-    h_ = scene.run.timeStepFraction * limit_.criticalTimeStep;
+                       fmt::format("{}", fraction), "a fraction in (0, 1]");
+    h_ = fraction * limit_.criticalTimeStep;
     if (!std::isfinite(h_))
       throw InputError(scene.source, "key run.time_step_fraction", "a scene without bonds or contacts",
                        "run.time_step_ns instead (no critical step to take a fraction of)");
+  }
+  int ratio = 1;
+  if (split && scene.run.outerStepRatio == 0) {
+    // "auto": the largest ratio whose outer step fits. When none above 1 fits the inner step,
+    // ratio 2 on a shorter inner step if that step is still at least the step of the unsplit
+    // scheme; otherwise no splitting at all: ratio 1 puts the outer group back on every step, where
+    // the stability limit is that of all effects together, not the two groups' separate ones.
+    const double outerStep = scene.run.outerStepFraction * outerLimit_.criticalTimeStep;
+    ratio = static_cast<int>(std::clamp(std::floor(outerStep / h_), 1.0, static_cast<double>(kMaxAutoOuterRatio)));
+    if (ratio == 1) {
+      const StabilityLimit all = criticalTimeStep(state_.bodies, bonds(), kinematics_, allTerms);
+      const double unsplit = fraction > 0.0 ? fraction * all.criticalTimeStep : h_;
+      if (fraction > 0.0 && 0.5 * outerStep >= unsplit) {
+        h_ = 0.5 * outerStep, ratio = 2;
+      } else {
+        split = false;
+        std::fill(outer.begin(), outer.end(), 0);
+        outerNames_.clear();
+        outerLimit_ = StabilityLimit{};
+        outerLimit_.criticalTimeStep = HUGE_VAL;
+        limit_ = all, h_ = unsplit;
+      }
+    }
+  } else if (split) {
+    ratio = scene.run.outerStepRatio;
   }
   if (!(h_ > 0.0))
     throw InputError(scene.source, "key run.time_step_ns", fmt::format("{}", h_),
@@ -94,18 +122,11 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
     throw InputError(scene.source, "key run.time_step_ns", fmt::format("{:.6g} ns", h_),
                      fmt::format("at most the critical time step {:.6g} ns{}, {}; docs/scene-file.md, time step",
                                  limit_.criticalTimeStep, split ? " of the inner step" : "", describe(limit_)));
-  int ratio = 1;
-  if (split) {
-    ratio = scene.run.outerStepRatio;
-    if (ratio == 0)
-      ratio = static_cast<int>(std::clamp(std::floor(scene.run.outerStepFraction * outerLimit_.criticalTimeStep / h_),
-                                          1.0, static_cast<double>(kMaxAutoOuterRatio)));
-    if (ratio * h_ > outerLimit_.criticalTimeStep)
-      throw InputError(scene.source, "key run.outer_step_ratio", fmt::format("{} (outer step {:.6g} ns)", ratio, ratio * h_),
-                       fmt::format("an outer step of at most the outer group's critical step {:.6g} ns, {}; "
-                                   "docs/scene-file.md, multiple time stepping",
-                                   outerLimit_.criticalTimeStep, describe(outerLimit_)));
-  }
+  if (split && ratio * h_ > outerLimit_.criticalTimeStep)
+    throw InputError(scene.source, "key run.outer_step_ratio", fmt::format("{} (outer step {:.6g} ns)", ratio, ratio * h_),
+                     fmt::format("an outer step of at most the outer group's critical step {:.6g} ns, {}; "
+                                 "docs/scene-file.md, multiple time stepping",
+                                 outerLimit_.criticalTimeStep, describe(outerLimit_)));
   std::vector<Effect*> pointers;
   for (const EffectPtr& e : effects_) pointers.push_back(e.get());
   sequence_ = EffectSequence(pointers, outer, ratio);

@@ -205,5 +205,40 @@ TEST(MdemMultipleTimeStep, BadSettingsNameTheKey) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(MdemMultipleTimeStep, AutoRatioWithoutRoomFallsBackSafely) {
+  // Dashpots in the outer group, strong enough that their step is shorter than the inner one:
+  // "auto" finds no ratio above 1 at the inner step. It takes ratio 2 on a shorter inner step
+  // when that step is at least the unsplit one; otherwise it does not split, and then the step is
+  // that of every effect together (as outer_step_ratio = 1 would give), not the inner group's.
+  auto scene = [](double outerFraction) {
+    Scene s = tubeScene({"bonds", "vdw_contact", "contact_damping"});
+    addTube(s, 6, Vec3::Zero(), Vec3::UnitX());
+    addTube(s, 6, Vec3(0.5, 2 * kTubeRadius + 0.34, 0), Vec3::UnitX());
+    s.contacts.damping.translational = 2.0;
+    s.run.timeStepFraction = 0.5;
+    s.run.outerStepRatio = 0;
+    s.run.outerStepFraction = outerFraction;
+    s.run.outerEffects = {"vdw_contact", "contact_damping"};
+    return s;
+  };
+  Scene unsplitScene = scene(1.0);
+  unsplitScene.run.outerStepRatio = 1;
+  const Simulation unsplit(unsplitScene);
+  ASSERT_EQ(unsplit.outerStepRatio(), 1);
+
+  const Simulation shorter(scene(1.0));
+  ASSERT_LT(shorter.outerStability().criticalTimeStep, shorter.stability().criticalTimeStep);  // the premise
+  EXPECT_EQ(shorter.outerStepRatio(), 2);
+  EXPECT_DOUBLE_EQ(shorter.timeStep(), 0.5 * shorter.outerStability().criticalTimeStep);
+  EXPECT_GE(shorter.timeStep(), unsplit.timeStep());
+  EXPECT_LT(shorter.timeStep(), 0.5 * shorter.stability().criticalTimeStep);
+
+  const Simulation none(scene(0.2));
+  EXPECT_EQ(none.outerStepRatio(), 1);
+  EXPECT_TRUE(none.outerEffectNames().empty());
+  EXPECT_EQ(none.timeStep(), unsplit.timeStep());
+  EXPECT_EQ(none.stability().criticalTimeStep, unsplit.stability().criticalTimeStep);
+}
+
 }  // namespace
 }  // namespace mesochain::mdem
