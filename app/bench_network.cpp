@@ -15,7 +15,6 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/bench_network_lammps.hpp"
 #include "app/bench_network_mts.hpp"
 #include "app/commands.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
@@ -23,6 +22,7 @@
 #include "mdem/contacts/network_generator.hpp"
 #include "mdem/contacts/network_structure.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/lammps_export.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/units.hpp"
@@ -345,7 +345,7 @@ Command makeBenchNetworkCommand() {
         const mdem::Scene s = networkScene(total, opt->tubeLength, true);
         const mdem::Simulation sim(s);
         const std::string prefix = fmt::format("{}-{}", opt->lammps, s.bodies.size());
-        writeLammpsNetwork(s, sim.timeStep(), prefix);
+        mdem::writeLammpsNetwork(s, sim.timeStep(), prefix);
         std::cout << fmt::format("{}.data, .table, .settings: {} elements, time step {:.4g} ns\n", prefix,
                                  s.bodies.size(), sim.timeStep());
       }

@@ -20,7 +20,7 @@
 #include "beam/fit_plot.hpp"
 #include "beam/mdem_export.hpp"
 #include "beam/plate_run.hpp"
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/build_info.hpp"
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
@@ -222,8 +222,8 @@ Command makeBeamCommand() {
     const std::string header = fmt::format(
         "mDEM model written by `mesochain beam` ({} closure, {} section): Y = {:.6g} GPa, G = {:.6g} GPa,\n"
         "T0 = {:.6g} Bohr, {} cells per brick. Parameters with units: beam.json.",
-        run.beam.closure, run.beam.shape, run.beam.young * beam::si::kHartreePerBohr3InMPa * 1e-3,
-        run.beam.shear * beam::si::kHartreePerBohr3InMPa * 1e-3, run.beam.cellLength, run.brick.cellsPerBrick);
+        run.beam.closure, run.beam.shape, run.beam.young * units::si::kHartreePerBohr3InMPa * 1e-3,
+        run.beam.shear * units::si::kHartreePerBohr3InMPa * 1e-3, run.beam.cellLength, run.brick.cellsPerBrick);
     // Every number checked before any file is written (an overflow such as C_eV = 1e308 ends
     // here, naming the entry, with no output that looks valid).
     const std::string model = beam::mdemModelToml(run.brick, ex, header);
@@ -264,7 +264,7 @@ Command makeBeamCommand() {
     std::cout << "\n";
     for (const beam::Beam& a : run.alternatives)
       std::cout << fmt::format("alternative ({} closure): h = {:.6g} nm, relative residual of D_s {:+.3g}\n", a.closure,
-                               a.thickness * beam::si::kBohrInNm, a.residuals.bendSoft);
+                               a.thickness * units::si::kBohrInNm, a.residuals.bendSoft);
     const auto& br = run.report["brick"];
     std::cout << fmt::format("brick: L = {:.6g} nm, mass = {:.6g} ag, k_n = {:.6g} MPa/nm, k_s = {:.6g} MPa/nm\n",
                              br["length_nm"].get<double>(), br["mass_ag"].get<double>(),

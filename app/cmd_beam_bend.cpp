@@ -20,7 +20,7 @@
 #include "beam/bend_curve_report.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/scan_table.hpp"
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
@@ -126,7 +126,7 @@ int runBendCurve(const BendCurveOptions& o) {
     if (o.windowNm.size() != 2 || !(o.windowNm[0] > 0.0) || !(o.windowNm[1] > o.windowNm[0]))
       throw InputError(cl, "--window-nm", fmt::format("{} values", o.windowNm.size()),
                        "two radii RMIN,RMAX in nm with 0 < RMIN < RMAX");
-    bo.window = std::make_pair(beam::si::kBohrInNm / o.windowNm[1], beam::si::kBohrInNm / o.windowNm[0]);
+    bo.window = std::make_pair(units::si::kBohrInNm / o.windowNm[1], units::si::kBohrInNm / o.windowNm[0]);
   }
   prepareOutputFolder(o.outputDir, cl, "option --output-dir");
   const beam::BendCurve curve = beam::analyseBendCurve(rings, *reference, bo);
@@ -151,14 +151,14 @@ int runBendCurve(const BendCurveOptions& o) {
   std::cout << "  R (nm)      1/R (1/Bohr)   secant (eV nm2)  tangent (eV nm2)  quadratic"
             << (sections ? "  radial extent (Bohr)  <u2> (Bohr2)" : "") << "\n";
   for (const beam::BendCurvePoint& p : curve.points)
-    std::cout << fmt::format("  {:<10.4g}  {:<13.6g}  {:<15.6g}  {:<16.6g}  {:<9}{}\n", beam::si::kBohrInNm / p.sample.curvature,
+    std::cout << fmt::format("  {:<10.4g}  {:<13.6g}  {:<15.6g}  {:<16.6g}  {:<9}{}\n", units::si::kBohrInNm / p.sample.curvature,
                              p.sample.curvature, p.secant * f, p.tangent * f, p.quadratic ? "yes" : "no",
                              sections ? fmt::format("  {:<20.6g}  {:.6g}", p.sample.radialExtent,
                                                     p.sample.meanSquareRadialOffset)
                                       : "");
   std::cout << fmt::format("linear regime ({}): D_0 = {:.6g} +- {:.2g} eV nm2 over {} ring(s), R >= {:.4g} nm\n",
                            curve.quadraticVerified ? "verified" : "NOT verified", curve.linear.value * f,
-                           curve.linear.error * f, curve.linear.points, beam::si::kBohrInNm / curve.quadraticMaxCurvature);
+                           curve.linear.error * f, curve.linear.points, units::si::kBohrInNm / curve.quadraticMaxCurvature);
   if (curve.hasQuartic)
     std::cout << fmt::format("quartic law U = D k^2/2 - c k^4 over all rings: D = {:.6g} eV nm2, c = {:.6g} Ha Bohr^4\n",
                              curve.quarticStiffness.value * f, curve.quarticCoefficient);

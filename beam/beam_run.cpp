@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <toml.hpp>
 
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
 
@@ -66,7 +66,7 @@ json fitReport(const QuadraticFit& f) {
 }
 
 json beamReport(const Beam& b, const std::optional<BeamConstants>& sigma) {
-  const double nm = si::kBohrInNm, gpa = si::kHartreePerBohr3InMPa * 1e-3;
+  const double nm = units::si::kBohrInNm, gpa = units::si::kHartreePerBohr3InMPa * 1e-3;
   json j;
   j["shape"] = b.shape;
   j["closure"] = b.closure;
@@ -105,7 +105,7 @@ json beamReport(const Beam& b, const std::optional<BeamConstants>& sigma) {
 }
 
 json brickReport(const Brick& b) {
-  const double nm = si::kBohrInNm, ag = si::kDaltonInAttogram;
+  const double nm = units::si::kBohrInNm, ag = units::si::kDaltonInAttogram;
   json j;
   j["cells_per_brick"] = b.cellsPerBrick;
   j["length_bohr"] = b.length;
@@ -117,8 +117,8 @@ json brickReport(const Brick& b) {
                                    b.inertia.z() * ag * nm * nm};
   j["k_n_hartree_per_bohr4"] = b.normalStiffness;
   j["k_s_hartree_per_bohr4"] = b.shearStiffness;
-  j["k_n_MPa_per_nm"] = b.normalStiffness * si::kHartreePerBohr4InMPaPerNm;
-  j["k_s_MPa_per_nm"] = b.shearStiffness * si::kHartreePerBohr4InMPaPerNm;
+  j["k_n_MPa_per_nm"] = b.normalStiffness * units::si::kHartreePerBohr4InMPaPerNm;
+  j["k_s_MPa_per_nm"] = b.shearStiffness * units::si::kHartreePerBohr4InMPaPerNm;
   j["bond_section"] = {{"area_nm2", b.section.area * nm * nm}, {"I_x_nm4", b.section.ix * std::pow(nm, 4)},
                        {"I_y_nm4", b.section.iy * std::pow(nm, 4)}, {"J_z_nm4", b.section.polar * std::pow(nm, 4)}};
   if (b.radius > 0.0) j["equivalent_cylinder_radius_nm"] = b.radius * nm;
@@ -331,7 +331,7 @@ BeamRun runBeam(const BeamInputs& in) {
     cellMass = *in.cellMass;
   } else {
     if (!atoms) throw InputError(src, "atoms per cell", "nothing", "atoms_per_cell (or cell_mass_dalton)");
-    cellMass = *atoms * si::kCarbonMassDalton;
+    cellMass = *atoms * units::si::kCarbonMassDalton;
   }
   run.brick = discretise(run.beam, in.cellsPerBrick, cellMass, src);
   report["brick"] = brickReport(run.brick);

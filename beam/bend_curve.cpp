@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::beam {
@@ -43,7 +43,7 @@ LeastSquaresConstant quadraticThroughReference(const std::vector<BendCurvePoint>
   return {s.coef(0), s.error(0), static_cast<int>(p.size())};
 }
 
-double radiusNm(double curvature) { return si::kBohrInNm / curvature; }
+double radiusNm(double curvature) { return units::si::kBohrInNm / curvature; }
 
 }  // namespace
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/plot/figure.hpp"
 #include "common/units.hpp"
 
@@ -16,7 +16,7 @@ using nlohmann::json;
 
 constexpr plot::Color kShade{222, 234, 250}, kEdge{70, 100, 160};
 
-double nm() { return si::kBohrInNm; }
+double nm() { return units::si::kBohrInNm; }
 
 json constantJson(const LeastSquaresConstant& c) {
   const double f = hartreeBohr2InEvNm2();

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 
 namespace mesochain::beam {
 
@@ -20,11 +20,11 @@ std::string commented(const std::string& text) {
 }  // namespace
 
 CantileverLoads cantileverLoads(const Brick& b, const MdemExportOptions& o) {
-  const double nm4 = si::kBohrInNm * si::kBohrInNm * si::kBohrInNm * si::kBohrInNm;
-  const double young = b.young * si::kHartreePerBohr3InMPa;   // MPa = pN / nm^2
-  const double shear = b.shear * si::kHartreePerBohr3InMPa;
+  const double nm4 = units::si::kBohrInNm * units::si::kBohrInNm * units::si::kBohrInNm * units::si::kBohrInNm;
+  const double young = b.young * units::si::kHartreePerBohr3InMPa;   // MPa = pN / nm^2
+  const double shear = b.shear * units::si::kHartreePerBohr3InMPa;
   CantileverLoads l;
-  l.length = (o.elements - 1) * b.length * si::kBohrInNm;
+  l.length = (o.elements - 1) * b.length * units::si::kBohrInNm;
   l.bendingMoment = o.tipRotation * young * b.section.iy * nm4 / l.length;
   l.twistingMoment = o.tipRotation * shear * b.section.polar * nm4 / l.length;
   return l;
@@ -37,17 +37,17 @@ std::string mdemModelToml(const Brick& b, const MdemExportOptions& o, const std:
   s += fmt::format("name = \"{}\"\n", o.elementType);
   if (b.radius > 0.0) {
     s += "shape = \"cylinder\"\n";
-    s += fmt::format("radius_nm = {:.17g}\n", b.radius * si::kBohrInNm);
+    s += fmt::format("radius_nm = {:.17g}\n", b.radius * units::si::kBohrInNm);
   } else {
     s += "shape = \"brick\"\n";
-    s += fmt::format("thickness_nm = {:.17g}   # h\n", b.thickness * si::kBohrInNm);
-    s += fmt::format("width_nm = {:.17g}       # w\n", b.width * si::kBohrInNm);
+    s += fmt::format("thickness_nm = {:.17g}   # h\n", b.thickness * units::si::kBohrInNm);
+    s += fmt::format("width_nm = {:.17g}       # w\n", b.width * units::si::kBohrInNm);
   }
-  s += fmt::format("length_nm = {:.17g}      # L = {} cells\n", b.length * si::kBohrInNm, b.cellsPerBrick);
-  s += fmt::format("mass_ag = {:.17g}\n\n[[bond_types]]\n", b.mass * si::kDaltonInAttogram);
+  s += fmt::format("length_nm = {:.17g}      # L = {} cells\n", b.length * units::si::kBohrInNm, b.cellsPerBrick);
+  s += fmt::format("mass_ag = {:.17g}\n\n[[bond_types]]\n", b.mass * units::si::kDaltonInAttogram);
   s += fmt::format("name = \"{}\"\n", o.bondType);
-  s += fmt::format("young_modulus_MPa = {:.17g}\n", b.young * si::kHartreePerBohr3InMPa);
-  s += fmt::format("shear_modulus_MPa = {:.17g}\n", b.shear * si::kHartreePerBohr3InMPa);
+  s += fmt::format("young_modulus_MPa = {:.17g}\n", b.young * units::si::kHartreePerBohr3InMPa);
+  s += fmt::format("shear_modulus_MPa = {:.17g}\n", b.shear * units::si::kHartreePerBohr3InMPa);
   return s;
 }
 

@@ -12,9 +12,11 @@
 //   bond stiffness per unit area (k_n, k_s): MPa / nm = pN / nm^3
 //   moment of inertia: ag nm^2; angular velocity: rad / ns; velocity: nm / ns (= m/s).
 // Input keys carry their unit in their name (length_nm, mass_ag, young_modulus_MPa, ...).
+#include "common/units.hpp"
+
 namespace mesochain::mdem::units {
 
-inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kPi = mesochain::units::kPi;
 
 // SI value of one internal unit.
 inline constexpr double kLengthSI = 1e-9;   // m
@@ -27,8 +29,8 @@ inline constexpr double kStressSI = kForceSI / (kLengthSI * kLengthSI);        /
 // Conversions from common units to internal ones.
 inline constexpr double kGigapascal = 1e9 / kStressSI;       // 1 GPa in MPa = 1000
 inline constexpr double kKgPerM3 = 1.0 / (kMassSI / (kLengthSI * kLengthSI * kLengthSI));  // ag/nm^3
-inline constexpr double kElectronvolt = 1.602176634e-19 / kEnergySI;  // 1 eV in zJ
-inline constexpr double kDalton = 1.66053906660e-27 / kMassSI;        // 1 u in ag
+inline constexpr double kElectronvolt = mesochain::units::si::kElectronvoltInJoule / kEnergySI;  // 1 eV in zJ
+inline constexpr double kDalton = mesochain::units::si::kDaltonInKilogram / kMassSI;        // 1 u in ag
 
 // Relative comparison used by the static checks below.
 constexpr bool near(double a, double b) { return (a > b ? a - b : b - a) <= 1e-12 * (a > b ? a : b); }

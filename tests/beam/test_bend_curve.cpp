@@ -11,7 +11,7 @@
 #include "beam/bend_curve.hpp"
 #include "beam/bend_curve_report.hpp"
 #include "beam/curve_fit.hpp"
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::beam {
@@ -79,7 +79,7 @@ TEST(BeamBendCurve, TangentConvergesToTheClosedFormOnAFinerGrid) {
 TEST(BeamBendCurve, TangentOfAPowerLawIsExact) {
   std::vector<BendSample> r;
   for (double R : {150.0, 75.0, 38.0, 19.0, 9.5, 3.8}) {
-    const double k = si::kBohrInNm / R;
+    const double k = units::si::kBohrInNm / R;
     r.push_back({k, kRef + 200.0 * std::pow(k, 1.5)});
   }
   const BendCurve b = analyseBendCurve(r, kRef, {});
@@ -120,7 +120,7 @@ TEST(BeamBendCurve, MarksTheQuadraticRegimeOfTheSecant) {
 // with U(0) free accepts them all as quadratic; the anchored curve sees the secant fall, warns,
 // and the free offset stands far from the straight reference.
 TEST(BeamBendCurve, AnchoringCatchesTheDriftAFreeOffsetHides) {
-  const double k0 = si::kBohrInNm / 19.0;  // 1/(19 nm) in 1/Bohr
+  const double k0 = units::si::kBohrInNm / 19.0;  // 1/(19 nm) in 1/Bohr
   const int n = 5;
   const double kmax = n * k0;
   const double target = 258.0 / hartreeBohr2InEvNm2();  // secant at R = 3.8 nm, Hartree Bohr²

@@ -16,7 +16,7 @@
 #include "beam/beam_model.hpp"
 #include "beam/brick.hpp"
 #include "beam/mdem_export.hpp"
-#include "beam/si_units.hpp"
+#include "common/units.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
 
@@ -40,7 +40,7 @@ BeamConstants collapsedTubeConstants() {
 TEST(BeamBrick, InertiaMatchesASumOverPointMasses) {
   const Beam beam = rectangleMeasuredThickness(collapsedTubeConstants(), 6.4, "test");
   const int n = 5;
-  const double cellMass = 120 * si::kCarbonMassDalton;
+  const double cellMass = 120 * units::si::kCarbonMassDalton;
   const Brick b = discretise(beam, n, cellMass, "test");
   EXPECT_DOUBLE_EQ(b.length, n * beam.cellLength);
   EXPECT_DOUBLE_EQ(b.mass, n * cellMass);
@@ -81,9 +81,9 @@ TEST(BeamBrick, RoundBeamBecomesAnEquivalentCylinder) {
 
 TEST(BeamUnits, AtomicUnitsOfPressureAndMass) {
   // CODATA 2018: atomic unit of pressure E_h / a_0^3 = 2.942 101 5697e13 Pa; 12.011 u in ag.
-  EXPECT_NEAR(si::kHartreePerBohr3InMPa / 2.9421015697e7, 1.0, 1e-9);
-  EXPECT_NEAR(si::kCarbonMassDalton * si::kDaltonInAttogram / 1.99447e-5, 1.0, 1e-5);
-  EXPECT_NEAR(si::kHartreeInZeptojoule, 4.3597447222071e3, 1e-9);
+  EXPECT_NEAR(units::si::kHartreePerBohr3InMPa / 2.9421015697e7, 1.0, 1e-9);
+  EXPECT_NEAR(units::si::kCarbonMassDalton * units::si::kDaltonInAttogram / 1.99447e-5, 1.0, 1e-5);
+  EXPECT_NEAR(units::si::kHartreeInZeptojoule, 4.3597447222071e3, 1e-9);
 }
 
 class BeamExport : public ::testing::Test {
@@ -103,7 +103,7 @@ class BeamExport : public ::testing::Test {
 TEST_F(BeamExport, MdemReadsTheModelAndTheScene) {
   const BeamConstants c = collapsedTubeConstants();
   const Beam beam = rectangleFourConstants(c, "test");
-  const Brick b = discretise(beam, 5, 120 * si::kCarbonMassDalton, "test");
+  const Brick b = discretise(beam, 5, 120 * units::si::kCarbonMassDalton, "test");
   MdemExportOptions o;
   // Small rotations: twist and bend together couple at second order (relative O(phi)).
   o.tipRotation = 1e-3;
@@ -111,22 +111,22 @@ TEST_F(BeamExport, MdemReadsTheModelAndTheScene) {
   const std::string scenePath = write("cantilever.toml", cantileverSceneToml(b, o));
   const mdem::Scene s = mdem::loadScene(scenePath);
 
-  const double nm = si::kBohrInNm, nm2 = nm * nm, nm4 = nm2 * nm2;
+  const double nm = units::si::kBohrInNm, nm2 = nm * nm, nm4 = nm2 * nm2;
   ASSERT_EQ(s.elementTypes.size(), 1u);
   const mdem::ElementType& t = s.elementTypes[0];
   EXPECT_EQ(t.name, o.elementType);
   EXPECT_NEAR(t.thickness / (beam.thickness * nm), 1.0, 1e-14);
   EXPECT_NEAR(t.width / (beam.width * nm), 1.0, 1e-14);
   EXPECT_NEAR(t.length / (b.length * nm), 1.0, 1e-14);
-  EXPECT_NEAR(t.mass / (b.mass * si::kDaltonInAttogram), 1.0, 1e-14);
+  EXPECT_NEAR(t.mass / (b.mass * units::si::kDaltonInAttogram), 1.0, 1e-14);
   const mdem::Vec3 inertia = t.principalInertia();
   for (int a = 0; a < 3; ++a)
-    EXPECT_NEAR(inertia[a] / (b.inertia[a] * si::kDaltonInAttogram * nm2), 1.0, 1e-13) << a;
+    EXPECT_NEAR(inertia[a] / (b.inertia[a] * units::si::kDaltonInAttogram * nm2), 1.0, 1e-13) << a;
   ASSERT_EQ(s.bodies.size(), o.elements);
   ASSERT_EQ(s.bonds.size(), std::size_t(o.elements - 1));
   const mdem::Bond& bond = s.bonds[0];
-  EXPECT_NEAR(bond.k.kn / (b.normalStiffness * si::kHartreePerBohr4InMPaPerNm), 1.0, 1e-12);
-  EXPECT_NEAR(bond.k.ks / (b.shearStiffness * si::kHartreePerBohr4InMPaPerNm), 1.0, 1e-12);
+  EXPECT_NEAR(bond.k.kn / (b.normalStiffness * units::si::kHartreePerBohr4InMPaPerNm), 1.0, 1e-12);
+  EXPECT_NEAR(bond.k.ks / (b.shearStiffness * units::si::kHartreePerBohr4InMPaPerNm), 1.0, 1e-12);
   EXPECT_NEAR(bond.section.area / (b.section.area * nm2), 1.0, 1e-13);
   EXPECT_NEAR(bond.section.ix / (b.section.ix * nm4), 1.0, 1e-13);
   EXPECT_NEAR(bond.section.iy / (b.section.iy * nm4), 1.0, 1e-13);
@@ -145,7 +145,7 @@ TEST_F(BeamExport, MdemReadsTheModelAndTheScene) {
   ASSERT_LT(block, 1000) << "not relaxed: residual moment " << m << " pN nm";
   const int tip = o.elements - 1;
   const double cells = (o.elements - 1) * b.cellsPerBrick;
-  const double toHartree = 1.0 / si::kHartreeInZeptojoule;  // pN nm -> Hartree
+  const double toHartree = 1.0 / units::si::kHartreeInZeptojoule;  // pN nm -> Hartree
   const double twist = load.moment.z() * toHartree * cells / c.twist;
   const double bend = load.moment.y() * toHartree * cells * c.cellLength * c.cellLength / c.bendSoft;
   EXPECT_NEAR(twist, o.tipRotation, 1e-9);  // the scene sized its loads for this rotation

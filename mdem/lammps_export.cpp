@@ -5,7 +5,7 @@
 // tube-tube potential (vdw_contact.hpp: two parallel elements side by side at centre distance r).
 // LAMMPS "units nano" are nm, ag, ns, ag nm^2/ns^2 = zJ: the mDEM units (docs/mdem-units.md), so
 // every number is written as is.
-#include "app/bench_network_lammps.hpp"
+#include "mdem/lammps_export.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -20,7 +20,7 @@
 #include "mdem/scene.hpp"
 #include "mdem/units.hpp"
 
-namespace mesochain::app {
+namespace mesochain::mdem {
 
 namespace {
 std::ofstream openOut(const std::string& path) {
@@ -44,16 +44,16 @@ struct RestTypes {
 };
 }  // namespace
 
-void writeLammpsNetwork(const mdem::Scene& scene, double timeStep, const std::string& prefix) {
-  const mdem::Bodies& b = scene.bodies;
+void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& prefix) {
+  const Bodies& b = scene.bodies;
   const int n = b.size();
-  const mdem::ElementType& type = scene.elementTypes.at(0);
+  const ElementType& type = scene.elementTypes.at(0);
   for (int i = 0; i < n; ++i)
     if (b.type[i] != 0) throw std::runtime_error("LAMMPS export: networks of one element type only");
 
   // Bonded neighbours along the tubes; molecules = tubes (a new one where no bond joins i-1, i).
   std::vector<std::vector<int>> neighbours(n);
-  for (const mdem::Bond& bond : scene.bonds) neighbours[bond.a].push_back(bond.b), neighbours[bond.b].push_back(bond.a);
+  for (const Bond& bond : scene.bonds) neighbours[bond.a].push_back(bond.b), neighbours[bond.b].push_back(bond.a);
   std::vector<int> molecule(n, 0);
   int tubes = 0;
   for (int i = 0; i < n; ++i) {
@@ -71,23 +71,23 @@ void writeLammpsNetwork(const mdem::Scene& scene, double timeStep, const std::st
     int type, i, j, k;
   };
   std::vector<Term> bonds, angles;
-  for (const mdem::Bond& bond : scene.bonds) {
+  for (const Bond& bond : scene.bonds) {
     const int t = bondTypes.of(bond.restLength);
     if (t > static_cast<int>(bondK.size())) bondK.push_back(0.5 * bond.k.kn * bond.section.area);
     bonds.push_back({t, bond.a + 1, bond.b + 1, 0});
   }
-  const mdem::Bond& first = scene.bonds.at(0);
+  const Bond& first = scene.bonds.at(0);
   const double bendK = 0.5 * first.k.kn * first.section.ix;
   for (int i = 0; i < n; ++i) {
     if (neighbours[i].size() != 2) continue;
     const int a = neighbours[i][0], c = neighbours[i][1];
-    const mdem::Vec3 u = b.position[a] - b.position[i], v = b.position[c] - b.position[i];
-    const double angle = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / mdem::units::kPi;
+    const Vec3 u = b.position[a] - b.position[i], v = b.position[c] - b.position[i];
+    const double angle = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / units::kPi;
     angles.push_back({angleTypes.of(angle), a + 1, i + 1, c + 1});
   }
 
-  mdem::Vec3 lo = b.position[0], hi = b.position[0];
-  for (const mdem::Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  Vec3 lo = b.position[0], hi = b.position[0];
+  for (const Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   lo.array() -= 5.0, hi.array() += 5.0;
 
   std::ofstream d = openOut(prefix + ".data");
@@ -110,11 +110,11 @@ void writeLammpsNetwork(const mdem::Scene& scene, double timeStep, const std::st
     d << fmt::format("{} {} {} {} {}\n", k + 1, angles[k].type, angles[k].i, angles[k].j, angles[k].k);
 
   // U(r): two elements parallel and side by side (the isotropic form of the contact).
-  mdem::TubePairSpec ps;
+  TubePairSpec ps;
   ps.lj = scene.contacts.vdw.lj, ps.radiusA = ps.radiusB = type.radius;
   ps.switchGap = scene.contacts.vdw.switchGap, ps.cutoffGap = scene.contacts.vdw.cutoffGap;
-  const mdem::TubePairPotential potential(ps);
-  const mdem::IsotropicVdw isotropic(potential, 0.5 * type.length, 0.5 * type.length);
+  const TubePairPotential potential(ps);
+  const IsotropicVdw isotropic(potential, 0.5 * type.length, 0.5 * type.length);
   const double rc = isotropic.cutoff(), r0 = 0.5;
   const int points = 2000;
   std::ofstream t = openOut(prefix + ".table");
@@ -141,4 +141,4 @@ void writeLammpsNetwork(const mdem::Scene& scene, double timeStep, const std::st
   s << fmt::format("timestep {:.9g}\n", timeStep);
 }
 
-}  // namespace mesochain::app
+}  // namespace mesochain::mdem
