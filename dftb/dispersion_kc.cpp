@@ -182,19 +182,6 @@ std::vector<Site> sitesWithinBonds(const Symmetry& s, const std::vector<std::vec
   return seen;
 }
 
-// d(image point g(x_j))/d(x_j, T, gamma) applied to dE/dy = f (the chain rule of
-// dftb/image_pair_sum.hpp for one end of a pair).
-void addImagePoint(const ObjectiveCell& cell, int j, const GroupElement& g,
-                   const Eigen::Vector3d& f, bool gradient, bool screw, ImagePairSum& out) {
-  const Symmetry& sym = cell.symmetry;
-  if (gradient) out.gradient.col(j) += sym.rotation(g).transpose() * f;
-  if (screw) {
-    const double zeta = static_cast<double>(g.zeta);
-    out.dTranslation += zeta * f.z();
-    out.dTwist += f.dot(zeta * objective::rotationZDerivative(sym.angle(g)) * cell.positions.col(j));
-  }
-}
-
 }  // namespace
 
 KolmogorovCrespiTerm::KolmogorovCrespiTerm(KolmogorovCrespiParameters parameters,
@@ -251,7 +238,7 @@ void KolmogorovCrespiTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     dNormal.col(q.i) += 0.5 * tap * v.dni;
     dNormal.col(q.j) += rot.transpose() * fm;  // m = R(g) n_j
     if (gradient) s.gradient.col(q.i) -= fd;
-    addImagePoint(cell, q.j, q.g, fd, gradient, screw, s);
+    addImagePointDerivative(cell, q.j, q.g, fd, gradient, screw, s);
     if (screw)  // dm/dgamma = zeta R'(phi_g) n_j
       s.dTwist += fm.dot(static_cast<double>(q.g.zeta) *
                          objective::rotationZDerivative(sym.angle(q.g)) * normal.col(q.j));
@@ -266,9 +253,9 @@ void KolmogorovCrespiTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
       const Eigen::Vector3d e1 = b[1].d - b[0].d, e2 = b[2].d - b[0].d;
       const Eigen::Vector3d f1 = e2.cross(dN), f2 = dN.cross(e1);  // dE/dy2, dE/dy3
       const Eigen::Vector3d f0 = -f1 - f2;                          // dE/dy1
-      addImagePoint(cell, b[0].j, b[0].g, f0, gradient, screw, s);
-      addImagePoint(cell, b[1].j, b[1].g, f1, gradient, screw, s);
-      addImagePoint(cell, b[2].j, b[2].g, f2, gradient, screw, s);
+      addImagePointDerivative(cell, b[0].j, b[0].g, f0, gradient, screw, s);
+      addImagePointDerivative(cell, b[1].j, b[1].g, f1, gradient, screw, s);
+      addImagePointDerivative(cell, b[2].j, b[2].g, f2, gradient, screw, s);
     }
   out.energies.add(name(), EnergyKind::Energy, s.energy, "Kolmogorov-Crespi");
   if (gradient) out.gradient = std::move(s.gradient);

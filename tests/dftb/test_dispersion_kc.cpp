@@ -218,6 +218,33 @@ TEST(KolmogorovCrespi, RingBilayerEqualsThePlanarSum) {
   }
 }
 
+// Pairs within 3 bonds get nothing: in a flat sheet those are exactly the 18 sites closer than
+// 4 Angstrom (3 at 1.42, 6 at 2.46, 3 at 2.84, 6 at 3.76; graph distance 4 starts at 4.26), so
+// a layer's own energy is the planar sum over its sites beyond 4 Angstrom.
+TEST(KolmogorovCrespi, ALayerInteractsWithItselfBeyondThreeBonds) {
+  for (const auto& p : {KolmogorovCrespiParameters::kc2005(), KolmogorovCrespiParameters::ouyang2018()}) {
+    const auto t = term(p);
+    const MetalKc m = metal(p);
+    // One unstrained layer (the layers of a bilayer ring are strained by +-d/(2R), which
+    // changes a layer's own energy at first order).
+    const ObjectiveCell layer = objective::buildGrapheneRingSector(1, Direction::Armchair, 700, 1, 3.4 * kA, kBond * kA);
+    const double ring = energy(t, layer) / layer.atomCount() / kMeV;
+    const double a = kBond * std::sqrt(3.0);
+    const double a1x = a * std::sqrt(3.0) / 2, a1y = a / 2;
+    const int n = static_cast<int>(m.rc / a) + 3;
+    double flat = 0.0;  // from an atom at 0: sites u a1 + w a2 and u a1 + w a2 + (b, 0)
+    for (double bx : {0.0, kBond})
+      for (int u = -n; u <= n; ++u)
+        for (int w = -n; w <= n; ++w) {
+          const double x = bx + (u + w) * a1x, y = (u - w) * a1y;
+          const double r = std::hypot(x, y);
+          if (r > 4.0 && r < m.rc) flat += 0.5 * planarPair(m, x, y, 0.0, true);
+        }
+    EXPECT_NEAR(ring, flat, 2e-3 * std::abs(flat)) << p.name;
+    EXPECT_LT(flat, -1.0);  // meV per atom: a real contribution, not a rounding
+  }
+}
+
 // AB bilayer: equilibrium spacing, binding energy, AA-AB corrugation (kc2005).
 TEST(KolmogorovCrespi, AbBilayerSpacingBindingAndCorrugation) {
   const auto p = KolmogorovCrespiParameters::kc2005();
