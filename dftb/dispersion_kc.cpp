@@ -97,7 +97,7 @@ void kcTaper(double r, double taperStart, double cutoff, double& value, double& 
     value = 0.0;
     return;
   }
-  // Ouyang et al. 2018, Eq. (S3) (Leven et al., J. Chem. Theory Comput. 12, 2896 (2016)):
+  // The taper of Ouyang et al. 2018 (and of Leven et al., J. Chem. Theory Comput. 12, 2896 (2016)):
   // Tap(x) = 20 x^7 - 70 x^6 + 84 x^5 - 35 x^4 + 1, dTap/dx = 140 x^3 (x - 1)^3.
   const double w = cutoff - taperStart;
   const double x = (r - taperStart) / w;
@@ -109,7 +109,7 @@ void kcTaper(double r, double taperStart, double cutoff, double& value, double& 
 
 KcPair kcPair(const KolmogorovCrespiParameters& p, const Eigen::Vector3d& d,
               const Eigen::Vector3d& ni, const Eigen::Vector3d& nj) {
-  // Kolmogorov & Crespi 2005, Eqs. (1)-(3), and their derivatives.
+  // The pair energy of Kolmogorov & Crespi 2005 (header) and its derivatives.
   const double r2 = d.squaredNorm(), r = std::sqrt(r2);
   const double inv2 = 1.0 / (p.delta * p.delta);
   const double ai = ni.dot(d), aj = nj.dot(d);

@@ -1,7 +1,7 @@
 #pragma once
 // The Kolmogorov-Crespi registry-dependent interlayer potential ("kolmogorov_crespi",
 // registered in dispersion_kc.cpp; `[dispersion] model = "kc"`, instead of the Lennard-Jones
-// term): A. N. Kolmogorov and V. H. Crespi, Phys. Rev. B 71, 235415 (2005), Eqs. (1)-(3):
+// term): A. N. Kolmogorov and V. H. Crespi, Phys. Rev. B 71, 235415 (2005):
 //   E = 1/2 sum_{(i, j, g)} Tap(r) V_ij,      d = g(x_j) - x_i, r = |d|,
 //   V_ij = e^{-lambda (r - z0)} [C + f(rho_ij) + f(rho_ji)] - A (z0 / r)^6,
 //   rho_ij^2 = r^2 - (n_i . d)^2,  rho_ji^2 = r^2 - (n_j^g . d)^2,
@@ -44,7 +44,7 @@ struct KolmogorovCrespiParameters {
   double z0 = 0, c0 = 0, c2 = 0, c4 = 0, c = 0, delta = 0, lambda = 0, a = 0;
   double cutoff = 0;       // r_c, Bohr
   double taperStart = 0;   // r_on, Bohr
-  // Kolmogorov & Crespi 2005, Table I (the set of LAMMPS's potentials/CC.KC): z0 = 3.34 A,
+  // Kolmogorov & Crespi 2005 (as distributed, citing it, in LAMMPS potentials/CC.KC): z0 = 3.34 A,
   // C0 = 15.71, C2 = 12.29, C4 = 4.933, C = 3.030 meV, delta = 0.578 A, lambda = 3.629 1/A,
   // A = 10.238 meV; default switch [20, 25] A.
   static KolmogorovCrespiParameters kc2005();

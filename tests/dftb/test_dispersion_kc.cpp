@@ -17,7 +17,7 @@
 //  * The AA-AB corrugation of the AB bilayer against diffusion Monte Carlo, E. Mostaani, N. D.
 //    Drummond and V. I. Fal'ko, Phys. Rev. Lett. 115, 115501 (2015): binding energies
 //    17.7(9) meV/atom (AB) and 11.5(9) meV/atom (AA), i.e. E_AA - E_AB = 6.2 +- 1.3 meV/atom.
-//  * Sliding (shape, as in KC 2005 Fig. 2 and every registry-dependent potential since): along
+//  * Sliding (the shape every registry-dependent potential of graphite gives): along
 //    the armchair direction AB -> SP -> BA -> AA -> AB, maxima at AA, a saddle at SP (a maximum
 //    along armchair, a minimum along zigzag) far below AA; along zigzag through AB a period of
 //    the lattice constant with its maximum half-way.
@@ -54,7 +54,7 @@ MetalKc metal(const KolmogorovCrespiParameters& p) {
           p.lambda * kA, p.a / kMeV, p.taperStart / kA, p.cutoff / kA};
 }
 
-// KC 2005 Eqs. (1)-(3) with n_i = n_j = e_z, times the taper, for a pair at (x, y, z).
+// The KC 2005 pair energy with n_i = n_j = e_z, times the taper, for a pair at (x, y, z).
 double planarPair(const MetalKc& p, double x, double y, double z, bool taper) {
   const double r = std::sqrt(x * x + y * y + z * z);
   const double s = (x * x + y * y) / (p.delta * p.delta);
