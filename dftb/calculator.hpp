@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dftb/band_structure.hpp"
+#include "dftb/dispersion_kc.hpp"
 #include "dftb/dispersion_term.hpp"
 #include "dftb/energy_ledger.hpp"
 #include "dftb/energy_term.hpp"
@@ -27,6 +28,7 @@ namespace mesochain::dftb {
 struct CalculatorSettings {
   BandSettings band;              // dftb/band_structure.hpp
   DispersionSettings dispersion;  // dftb/dispersion_term.hpp
+  KolmogorovCrespiSettings kc;    // dftb/dispersion_kc.hpp (instead of `dispersion`)
   SccSettings scc;  // dftb/scc_term.hpp; enabled: the band term is self-consistent
 };
 

@@ -6,7 +6,8 @@
 // gamma from the one chain rule of d:
 //   dd/dx_i = -1,  dd/dx_j = R(g),  dd/dT = zeta e_z,  dd/dgamma = zeta R'(phi_g) x_j
 // (each unordered pair appears twice in the list, hence the 1/2). Terms supply only the
-// evaluator of one pair; this file owns the loop, the chain rule and the OpenMP.
+// evaluator of one pair; this file owns the loop, the chain rule (addImagePointDerivative) and
+// the OpenMP.
 //
 // kernel(i, j, r, value, derivative) fills K and dK/dr for cell atoms i, j at distance r;
 // weight(i, j) gives w_ij (a pair of weight 0 is skipped).
@@ -52,6 +53,22 @@ Eigen::MatrixXd imagePairMatrix(const objective::ObjectiveCell& cell,
   return m;
 }
 
+// The chain rule of an image point y = g(x_j), for dE/dy = f: adds dE/dx_j = R(g)^T f (when
+// `gradient`), dE/dT = zeta f_z and dE/dgamma = f . zeta R'(phi_g) x_j (when `screw`). A pair
+// d = g(x_j) - x_i is this at its far end and -f at x_i; terms whose energy depends on other
+// image points (the neighbours that define a normal, dftb/dispersion_kc.cpp) use it for those.
+inline void addImagePointDerivative(const objective::ObjectiveCell& cell, int j,
+                                    const objective::GroupElement& g, const Eigen::Vector3d& f,
+                                    bool gradient, bool screw, ImagePairSum& out) {
+  const auto& sym = cell.symmetry;
+  if (gradient) out.gradient.col(j) += sym.rotation(g).transpose() * f;
+  if (screw) {
+    const double zeta = static_cast<double>(g.zeta);
+    out.dTranslation += zeta * f.z();
+    out.dTwist += f.dot(zeta * objective::rotationZDerivative(sym.angle(g)) * cell.positions.col(j));
+  }
+}
+
 namespace detail {
 // The pairs [lo, hi) of the list into `out` (gradient sized when wanted).
 template <class Kernel, class Weight>
@@ -69,16 +86,8 @@ void addImagePairs(const objective::ObjectiveCell& cell, const std::vector<objec
     out.energy += 0.5 * w * v;
     if (!gradient && !screw) continue;
     const Eigen::Vector3d f = (0.5 * w * dv / p.r) * p.d;  // d(1/2 w K)/dd
-    if (gradient) {
-      out.gradient.col(p.i) -= f;
-      out.gradient.col(p.j) += sym.rotation(p.g).transpose() * f;
-    }
-    if (screw) {
-      const double zeta = static_cast<double>(p.g.zeta);
-      out.dTranslation += zeta * f.z();
-      out.dTwist +=
-          f.dot(zeta * objective::rotationZDerivative(sym.angle(p.g)) * cell.positions.col(p.j));
-    }
+    if (gradient) out.gradient.col(p.i) -= f;
+    addImagePointDerivative(cell, p.j, p.g, f, gradient, screw, out);
   }
 }
 }  // namespace detail

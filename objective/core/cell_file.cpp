@@ -186,18 +186,62 @@ void readParameters(const TomlTable& root, CellInput& in) {
   }
 }
 
+// [dispersion] model = "kc" (dftb/dispersion_kc.hpp): the parameter set and, when given, its
+// cutoff and taper start (absent: the set's own, resolved in dftb/), and the bond cutoff.
+template <class Positive>
+void readKolmogorovCrespi(const TomlTable& t, DispersionInput& d, Positive&& positive) {
+  if (t.has("parameters")) {
+    d.kcParameters = t.string("parameters", "\"kc2005\" or \"ouyang2018\"");
+    if (d.kcParameters != "kc2005" && d.kcParameters != "ouyang2018")
+      t.fail("parameters", "\"" + d.kcParameters + "\"", "\"kc2005\" or \"ouyang2018\"");
+  }
+  if (t.has("cutoff") != t.has("taper_start"))
+    t.fail(t.has("cutoff") ? "cutoff" : "taper_start",
+           t.has("cutoff") ? "a cutoff without taper_start" : "a taper_start without cutoff",
+           "cutoff and taper_start together, or neither (the parameter set's own)");
+  d.cutoff = 0.0;
+  if (t.has("cutoff")) {
+    d.cutoff = positive("cutoff", 0.0, "Å") * units::kAngstromInBohr;
+    if (d.cutoff > kMaximumKcCutoffAngstrom * units::kAngstromInBohr || d.cutoff < 7.0 * units::kAngstromInBohr)
+      t.fail("cutoff", fmt::format("{} Å", d.cutoff * units::kBohrInAngstrom),
+             fmt::format("a cutoff in [7, {}] Å", kMaximumKcCutoffAngstrom));
+  }
+  d.kcTaperStart = -1.0;
+  if (t.has("taper_start")) {
+    const double x = t.number("taper_start", "a distance >= 0 (Å) below the cutoff");
+    if (!(x >= 0.0)) t.fail("taper_start", fmt::format("{} Å", x), "a distance >= 0 (Å)");
+    if (!(x * units::kAngstromInBohr < d.cutoff))
+      t.fail("taper_start", fmt::format("{} Å >= cutoff {} Å", x, d.cutoff * units::kBohrInAngstrom),
+             "a taper start below the cutoff");
+    d.kcTaperStart = x * units::kAngstromInBohr;
+  }
+  d.kcBondCutoff = positive("bond_cutoff", kDefaultKcBondCutoffAngstrom, "Å") * units::kAngstromInBohr;
+  if (d.kcBondCutoff * units::kBohrInAngstrom >= 2.2)
+    t.fail("bond_cutoff", fmt::format("{} Å", d.kcBondCutoff * units::kBohrInAngstrom),
+           "a covalent cutoff below 2.2 Å (the second neighbours of graphene are at 2.46 Å)");
+}
+
 void readDispersion(const TomlTable& root, CellInput& in) {
   const auto t = root.table("dispersion");
   if (!t) return;  // documented default: no dispersion
-  t->allowOnly({"model", "epsilon", "r0", "cutoff", "summation", "ewald_tolerance"});
+  const std::vector<std::string> ljKeys{"epsilon", "r0", "summation", "ewald_tolerance"};
+  const std::vector<std::string> kcKeys{"parameters", "taper_start", "bond_cutoff"};
+  t->allowOnly({"model", "epsilon", "r0", "cutoff", "summation", "ewald_tolerance", "parameters",
+                "taper_start", "bond_cutoff"});
   DispersionInput& d = in.dispersion;
-  d.model = t->string("model", "\"none\" or \"lj\"");
+  const char* models = "\"none\", \"lj\" or \"kc\"";
+  d.model = t->string("model", models);
   if (d.model == "none") {
-    for (const char* k : {"epsilon", "r0", "cutoff", "summation", "ewald_tolerance"})
+    for (const char* k : {"epsilon", "r0", "cutoff", "summation", "ewald_tolerance",
+                          "parameters", "taper_start", "bond_cutoff"})
       if (t->has(k)) t->fail(k, "a value with model = \"none\"", "no parameters for \"none\"");
     return;
   }
-  if (d.model != "lj") t->fail("model", "\"" + d.model + "\"", "\"none\" or \"lj\"");
+  if (d.model != "lj" && d.model != "kc") t->fail("model", "\"" + d.model + "\"", models);
+  for (const std::string& k : d.model == "lj" ? kcKeys : ljKeys)
+    if (t->has(k))
+      t->fail(k, fmt::format("a value with model = \"{}\"", d.model),
+              fmt::format("only the keys of model = \"{}\" (docs/cell-file.md)", d.model));
   auto positive = [&](const char* key, double def, const char* unit) {
     if (!t->has(key)) return def;
     const double x = t->number(key, fmt::format("a positive number ({})", unit));
@@ -205,6 +249,10 @@ void readDispersion(const TomlTable& root, CellInput& in) {
       t->fail(key, fmt::format("{} {}", x, unit), fmt::format("a positive number ({})", unit));
     return x;
   };
+  if (d.model == "kc") {
+    readKolmogorovCrespi(*t, d, positive);
+    return;
+  }
   d.epsilon =
       positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
   d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;

@@ -30,13 +30,21 @@ inline constexpr double kDefaultCollapseTransitionRadiusAngstrom = 3.4;
 // Atoms (and images) closer than this are an input error (Å).
 inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 
+// Defaults of model = "kc" (dftb/dispersion_kc.hpp): the bond graph's covalent cutoff (Å) and
+// the largest cutoff accepted (Å).
+inline constexpr double kDefaultKcBondCutoffAngstrom = 1.7;
+inline constexpr double kMaximumKcCutoffAngstrom = 100.0;
+
 struct DispersionInput {
-  std::string model = "none";  // "none" | "lj"
-  double epsilon = 0;          // Hartree
-  double r0 = 0;               // Bohr
-  double cutoff = 0;           // Bohr
-  std::string summation = "cutoff";  // r^-6 tail: "cutoff" | "ewald"
-  double ewaldTolerance = 1e-8;      // relative, with summation = "ewald"
+  std::string model = "none";  // "none" | "lj" | "kc"
+  double epsilon = 0;          // Hartree (lj)
+  double r0 = 0;               // Bohr (lj)
+  double cutoff = 0;           // Bohr (lj; kc: 0 = the parameter set's)
+  std::string summation = "cutoff";  // r^-6 tail: "cutoff" | "ewald" (lj)
+  double ewaldTolerance = 1e-8;      // relative, with summation = "ewald" (lj)
+  std::string kcParameters = "kc2005";  // kc: "kc2005" | "ouyang2018"
+  double kcTaperStart = -1;             // Bohr (kc; < 0 = the parameter set's)
+  double kcBondCutoff = 0;              // Bohr (kc)
 };
 
 // [scc]: self-consistent charges (dftb/scc_term.hpp); defaults as documented in

@@ -98,6 +98,14 @@ void writeCellFile(const std::string& path, const CellInput& in) {
                        real(d.epsilon * units::kHartreeInKcalPerMol),
                        real(d.r0 * units::kBohrInAngstrom),
                        real(d.cutoff * units::kBohrInAngstrom));
+  if (d.model == "kc") {
+    out << "parameters = " << quoted(d.kcParameters) << "\n";
+    if (d.cutoff > 0.0)
+      out << fmt::format("cutoff = {}  # Å\ntaper_start = {}  # Å\n",
+                         real(d.cutoff * units::kBohrInAngstrom),
+                         real(d.kcTaperStart * units::kBohrInAngstrom));
+    out << fmt::format("bond_cutoff = {}  # Å\n", real(d.kcBondCutoff * units::kBohrInAngstrom));
+  }
   if (d.model == "lj" && d.summation == "ewald")
     out << fmt::format("summation = \"ewald\"\newald_tolerance = {}\n", real(d.ewaldTolerance));
   const SccInput& sc = in.scc;

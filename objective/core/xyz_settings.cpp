@@ -55,6 +55,14 @@ std::string xyzSettingsKeys(const CellInput& in) {
     add("dispersion.summation", d.summation);
     if (d.summation == "ewald") add("dispersion.ewald_tolerance", real(d.ewaldTolerance));
   }
+  if (d.model == "kc") {
+    add("dispersion.parameters", d.kcParameters);
+    if (d.cutoff > 0.0) {
+      add("dispersion.cutoff", real(d.cutoff * units::kBohrInAngstrom));
+      add("dispersion.taper_start", real(d.kcTaperStart * units::kBohrInAngstrom));
+    }
+    add("dispersion.bond_cutoff", real(d.kcBondCutoff * units::kBohrInAngstrom));
+  }
   const SccInput& s = in.scc;
   add("scc.enabled", flag(s.enabled));
   if (s.enabled) {

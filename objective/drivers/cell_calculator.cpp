@@ -20,6 +20,13 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
     s.dispersion.ewald = in.dispersion.summation == "ewald";
     s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
   }
+  if (in.dispersion.model == "kc") {
+    s.kc.enabled = true;
+    s.kc.parameters = in.dispersion.kcParameters;
+    s.kc.cutoff = in.dispersion.cutoff;
+    s.kc.taperStart = in.dispersion.kcTaperStart;
+    s.kc.bondCutoff = in.dispersion.kcBondCutoff;
+  }
   s.scc.enabled = in.scc.enabled;
   s.scc.chargeTolerance = in.scc.chargeTolerance;
   s.scc.energyTolerance = in.scc.energyTolerance;

@@ -52,6 +52,17 @@ void forEachField(S& s, F&& f) {
 }
 
 template <class S, class F>
+  requires std::is_same_v<std::remove_const_t<S>, dftb::KolmogorovCrespiSettings>
+void forEachField(S& s, F&& f) {
+  auto& [enabled, parameters, cutoff, taperStart, bondCutoff] = s;
+  f("enabled", enabled, FieldRole::Result);
+  f("parameters", parameters, FieldRole::Result);
+  f("cutoff_bohr", cutoff, FieldRole::Result);
+  f("taper_start_bohr", taperStart, FieldRole::Result);
+  f("bond_cutoff_bohr", bondCutoff, FieldRole::Result);
+}
+
+template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, dftb::SccSettings>
 void forEachField(S& s, F&& f) {
   auto& [enabled, chargeTolerance, energyTolerance, maxIterations, mixer, mixing, ewaldTolerance,
@@ -71,9 +82,10 @@ void forEachField(S& s, F&& f) {
 template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, dftb::CalculatorSettings>
 void forEachField(S& s, F&& f) {
-  auto& [band, dispersion, scc] = s;
+  auto& [band, dispersion, kc, scc] = s;
   f("band", band, FieldRole::Result);
   f("dispersion", dispersion, FieldRole::Result);
+  f("kc", kc, FieldRole::Result);
   f("scc", scc, FieldRole::Result);
 }
 

@@ -104,6 +104,12 @@ py::dict dispersionDict(const objective::DispersionInput& d) {
     out["summation"] = d.summation;
     out["ewald_tolerance"] = d.ewaldTolerance;
   }
+  if (d.model == "kc") {  // atomic units; cutoff 0 and taper_start < 0: the parameter set's
+    out["parameters"] = d.kcParameters;
+    out["cutoff"] = d.cutoff;
+    out["taper_start"] = d.kcTaperStart;
+    out["bond_cutoff"] = d.kcBondCutoff;
+  }
   return out;
 }
 

@@ -28,6 +28,7 @@
 #include "dftb/dispersion_lj.hpp"
 #include "dftb/pair_potential_term.hpp"
 #include "dftb/term_registry.hpp"
+#include "objective/core/graphene_builder.hpp"
 #include "scc_support.hpp"
 #include "support.hpp"
 
@@ -93,6 +94,18 @@ CalculatorSettings withDispersion(CalculatorSettings s, bool ewald) {
   return s;
 }
 
+// Kolmogorov-Crespi instead of Lennard-Jones; cutoff and taper start in Angstrom (0 and -1: the
+// parameter set's own).
+CalculatorSettings withKc(CalculatorSettings s, const std::string& set, double cutoff,
+                          double taperStart) {
+  s.kc.enabled = true;
+  s.kc.parameters = set;
+  s.kc.cutoff = cutoff * units::kAngstromInBohr;
+  s.kc.taperStart = taperStart < 0 ? -1.0 : taperStart * units::kAngstromInBohr;
+  s.kc.bondCutoff = 1.7 * units::kAngstromInBohr;
+  return s;
+}
+
 ObjectiveCell distorted(ObjectiveCell c, double amplitude) {
   testing::distort(c, amplitude);
   return c;
@@ -118,6 +131,19 @@ std::vector<TermCase> cases() {
                withDispersion(carbonSettings(1, 800.0), true), armchair, 1e-8, 2});
   c.push_back({"test_soft_pair", "distorted (4,4) tube", carbon, carbonSettings(1, 800.0),
                armchair, 1e-8, 3});
+  // Kolmogorov-Crespi: across a small tube (normals of a curved, distorted sheet), and between
+  // the two layers of a bent AB bilayer (40 sectors, R ~ 16 Angstrom), a screw cell of 8 atoms.
+  c.push_back({"kolmogorov_crespi", "2005 set, taper [8, 12] A, distorted (4,4) tube", carbon,
+               withKc(carbonSettings(1, 800.0), "kc2005", 12.0, 8.0), armchair, 1e-8, 2});
+  c.push_back({"kolmogorov_crespi", "2018 set, its taper (16 A), distorted (5,0) tube", carbon,
+               withKc(carbonSettings(1, 800.0), "ouyang2018", 0.0, -1.0), zigzag, 1e-8, 3});
+  c.push_back({"kolmogorov_crespi", "2005 set, taper [8, 12] A, distorted bent AB bilayer",
+               carbon, withKc(carbonSettings(1, 800.0), "kc2005", 12.0, 8.0),
+               distorted(objective::buildGrapheneRingSector(
+                             2, objective::Direction::Zigzag, 40, 1,
+                             3.4 * units::kAngstromInBohr, 1.42 * units::kAngstromInBohr),
+                         0.05),
+               1e-8, 2});
   return c;
 }
 

@@ -44,6 +44,8 @@ TEST(SettingsFields, EveryVisitorReachesEveryMember) {
   EXPECT_EQ(visitedCount<dftb::BandSettings>(), memberCount<dftb::BandSettings>());
   EXPECT_EQ(visitedCount<dftb::DispersionSettings>(), memberCount<dftb::DispersionSettings>());
   EXPECT_EQ(visitedCount<dftb::SccSettings>(), memberCount<dftb::SccSettings>());
+  EXPECT_EQ(visitedCount<dftb::KolmogorovCrespiSettings>(),
+            memberCount<dftb::KolmogorovCrespiSettings>());
   EXPECT_EQ(visitedCount<dftb::CalculatorSettings>(), memberCount<dftb::CalculatorSettings>());
   EXPECT_EQ(visitedCount<RelaxSettings>(), memberCount<RelaxSettings>());
   EXPECT_EQ(visitedCount<ScanSettings>(), memberCount<ScanSettings>());

@@ -54,6 +54,9 @@ void expectSameInput(const CellInput& a, const CellInput& b) {
   EXPECT_NEAR(a.dispersion.epsilon, b.dispersion.epsilon, 1e-15);
   EXPECT_NEAR(a.dispersion.r0, b.dispersion.r0, 1e-12);
   EXPECT_NEAR(a.dispersion.cutoff, b.dispersion.cutoff, 1e-12);
+  EXPECT_EQ(a.dispersion.kcParameters, b.dispersion.kcParameters);
+  EXPECT_NEAR(a.dispersion.kcTaperStart, b.dispersion.kcTaperStart, 1e-12);
+  EXPECT_NEAR(a.dispersion.kcBondCutoff, b.dispersion.kcBondCutoff, 1e-12);
   EXPECT_EQ(a.scc.enabled, b.scc.enabled);
   EXPECT_EQ(a.scc.chargeTolerance, b.scc.chargeTolerance);
   EXPECT_EQ(a.scc.energyTolerance, b.scc.energyTolerance);
@@ -178,6 +181,32 @@ set = "pbc-0-3"
   EXPECT_EQ(in.cell.atomCount(), 4);  // 40 atoms / C_10
   EXPECT_EQ(in.cell.symmetry.rotationOrder(), 10);
   EXPECT_EQ(in.cell.symmetry.twist(), 0.0);
+  fs::remove_all(dir);
+}
+
+// [dispersion] model = "kc": defaults (the parameter set's cutoff and taper, resolved in dftb/,
+// stay unset here), explicit keys, and the round trip through writeCellFile.
+TEST(CellFile, ReadsAndWritesKolmogorovCrespi) {
+  const fs::path dir = scratch();
+  writeText(dir / "kc.toml", kBase + "[dispersion]\nmodel = \"kc\"\n");
+  const CellInput plain = readCellFile((dir / "kc.toml").string());
+  EXPECT_EQ(plain.dispersion.model, "kc");
+  EXPECT_EQ(plain.dispersion.kcParameters, "kc2005");
+  EXPECT_EQ(plain.dispersion.cutoff, 0.0);
+  EXPECT_LT(plain.dispersion.kcTaperStart, 0.0);
+  EXPECT_NEAR(plain.dispersion.kcBondCutoff, 1.7 * kAngstromInBohr, 1e-12);
+  writeText(dir / "kc2.toml", kBase + "[dispersion]\nmodel = \"kc\"\nparameters = \"ouyang2018\"\n"
+                                      "cutoff = 14\ntaper_start = 2.5\nbond_cutoff = 1.8\n");
+  const CellInput in = readCellFile((dir / "kc2.toml").string());
+  EXPECT_EQ(in.dispersion.kcParameters, "ouyang2018");
+  EXPECT_NEAR(in.dispersion.cutoff, 14.0 * kAngstromInBohr, 1e-12);
+  EXPECT_NEAR(in.dispersion.kcTaperStart, 2.5 * kAngstromInBohr, 1e-12);
+  EXPECT_NEAR(in.dispersion.kcBondCutoff, 1.8 * kAngstromInBohr, 1e-12);
+  for (const CellInput* c : {&plain, &in}) {
+    const std::string out = (dir / "written.toml").string();
+    writeCellFile(out, *c);
+    expectSameInput(readCellFile(out), *c);
+  }
   fs::remove_all(dir);
 }
 
@@ -316,6 +345,27 @@ set = "pbc-0-3"
       {"dispersion model",
        kBase + "[dispersion]\nmodel = \"d3\"\n",
        {"dispersion.model (line 16)"}},
+      {"kc with an lj key",
+       kBase + "[dispersion]\nmodel = \"kc\"\nepsilon = 0.1\n",
+       {"dispersion.epsilon (line 17)", "model = \"kc\""}},
+      {"lj with a kc key",
+       kBase + "[dispersion]\nmodel = \"lj\"\nbond_cutoff = 1.7\n",
+       {"dispersion.bond_cutoff (line 17)"}},
+      {"kc parameter set",
+       kBase + "[dispersion]\nmodel = \"kc\"\nparameters = \"kc2006\"\n",
+       {"dispersion.parameters (line 17)", "kc2005"}},
+      {"kc cutoff without taper start",
+       kBase + "[dispersion]\nmodel = \"kc\"\ncutoff = 20\n",
+       {"dispersion.cutoff (line 17)", "taper_start"}},
+      {"kc taper start beyond the cutoff",
+       kBase + "[dispersion]\nmodel = \"kc\"\ncutoff = 20\ntaper_start = 21\n",
+       {"dispersion.taper_start (line 18)", "below the cutoff"}},
+      {"kc cutoff of 1000 Å",
+       kBase + "[dispersion]\nmodel = \"kc\"\ncutoff = 1000\ntaper_start = 0\n",
+       {"dispersion.cutoff (line 17)", "[7, 100]"}},
+      {"kc bond cutoff at second neighbours",
+       kBase + "[dispersion]\nmodel = \"kc\"\nbond_cutoff = 2.5\n",
+       {"dispersion.bond_cutoff (line 17)", "2.2"}},
       {"energy with max_steps",
        kBase + "[task]\ntype = \"energy\"\nmax_steps = 3\n",
        {"task.max_steps (line 17)"}},
