@@ -30,10 +30,21 @@ inline constexpr double kDefaultCollapseTransitionRadiusAngstrom = 3.4;
 // Atoms (and images) closer than this are an input error (Å).
 inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 
+// Per-element Lennard-Jones parameters ([dispersion] parameters = "uff" or elements = {...}).
+struct LjElementInput {
+  double epsilon = 0;  // Hartree, well depth
+  double r0 = 0;       // Bohr, position of the minimum
+};
+
 struct DispersionInput {
   std::string model = "none";  // "none" | "lj"
-  double epsilon = 0;          // Hartree
+  double epsilon = 0;          // Hartree (one parameter set for every pair; 0 with `elements`)
   double r0 = 0;               // Bohr
+  // "" (epsilon, r0 or explicit elements) | "uff" (objective/core/uff_parameters.hpp)
+  std::string parameters;
+  // Per element of the cell, when non-empty (then epsilon = r0 = 0): pairs combine by geometric
+  // means, as DFTB+ (dftb::DispersionSettings).
+  std::map<std::string, LjElementInput> elements;
   double cutoff = 0;           // Bohr
   std::string summation = "cutoff";  // r^-6 tail: "cutoff" | "ewald"
   double ewaldTolerance = 1e-8;      // relative, with summation = "ewald"

@@ -100,6 +100,15 @@ py::dict dispersionDict(const objective::DispersionInput& d) {
   if (d.model == "lj") {
     out["epsilon"] = d.epsilon;
     out["r0"] = d.r0;
+    out["parameters"] = d.parameters;
+    py::dict elements;
+    for (const auto& [el, p] : d.elements) {
+      py::dict e;
+      e["epsilon"] = p.epsilon;
+      e["r0"] = p.r0;
+      elements[py::str(el)] = e;
+    }
+    out["elements"] = elements;
     out["cutoff"] = d.cutoff;
     out["summation"] = d.summation;
     out["ewald_tolerance"] = d.ewaldTolerance;
