@@ -208,7 +208,8 @@ void bindCells(py::module_& m) {
       .def_readonly("parameter_files", &CellInput::parameterFiles)
       .def_readonly("max_angular_momentum", &CellInput::maxAngularMomentum)
       .def_property_readonly("dispersion", [](const CellInput& in) { return dispersionDict(in.dispersion); },
-                             "model and (lj) epsilon (Hartree), r0, cutoff (Bohr), summation")
+                             "model and (lj) epsilon (Hartree), r0, cutoff (Bohr), summation, parameters (\"uff\" or \"\"), "
+                             "elements (per element epsilon, r0)")
       .def_property_readonly("scc", [](const CellInput& in) { return sccDict(in.scc); })
       .def_property_readonly("task", [](const CellInput& in) { return taskDict(in.task); },
                              "type, force_tolerance (Ha/Bohr), max_steps, relax_translation")

@@ -219,3 +219,20 @@ TEST(DftbInput, UnitsAreDftbPlusConstants) {
   EXPECT_NEAR(kDftbPlusAngstromInBohr / units::kAngstromInBohr - 1, -7.2e-8, 0.1e-8);
   EXPECT_NEAR(kDftbPlusKcalPerMolInHartree / units::kKcalPerMolInHartree - 1, 6.7e-4, 0.1e-4);
 }
+
+TEST(DftbInput, InlineGeometryEqualsTheIncludedFile) {
+  const std::string gen = mesochain::testing::readText(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/ch4/geo.gen");
+  std::string text = methane("");
+  text.replace(text.find("  <<< \"geo.gen\"\n"), 16, gen);
+  const auto inline_ = read("inline-gen", text);
+  const auto included = read("included-gen", methane(""));
+  ASSERT_EQ(inline_.cell.atomCount(), 5);
+  EXPECT_TRUE(inline_.cell.positions == included.cell.positions);
+  EXPECT_EQ(inline_.cell.speciesNames, included.cell.speciesNames);
+  // An error in an inline .gen line names the line of the .hsd (line 1 is "Geometry = ...",
+  // the atom lines follow the count and element lines).
+  std::string bad = text;
+  bad.replace(bad.find("    3  2"), 8, "    3  x");
+  const std::string m = errorOf([&] { read("inline-bad", bad); });
+  EXPECT_NE(m.find("dftb_in.hsd, line 6"), std::string::npos) << m;
+}
