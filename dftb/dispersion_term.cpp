@@ -21,7 +21,9 @@ void validate(const DispersionSettings& d) {
   requireFinite(d.cutoff, src, "dispersion.cutoff_bohr");
   if (!(d.epsilon >= 0.0))
     throw InputError(src, "dispersion.epsilon_hartree", "a negative well depth", ">= 0");
-  if (!(d.r0 > 0.0)) throw InputError(src, "dispersion.r0_bohr", "r0 <= 0", "a positive distance");
+  // With per-element parameters epsilon and r0 are not used (the readers leave them 0).
+  if (d.elements.empty() && !(d.r0 > 0.0))
+    throw InputError(src, "dispersion.r0_bohr", "r0 <= 0", "a positive distance");
   if (!(d.cutoff > 0.0))
     throw InputError(src, "dispersion.cutoff_bohr", "cutoff <= 0", "a positive distance");
   if (d.elementEpsilon.size() != d.elements.size() || d.elementR0.size() != d.elements.size())

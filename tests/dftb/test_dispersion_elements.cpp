@@ -89,6 +89,8 @@ TEST(DispersionElements, PairsCombineByGeometricMeans) {
     SCOPED_TRACE(ewald ? "ewald" : "cutoff");
     CalculatorSettings s = single(ewald);
     s.dispersion.cutoff = 40.0;
+    // As the readers leave them: the one-set values unused.
+    s.dispersion.epsilon = s.dispersion.r0 = 0.0;
     // Listed in another order than the parameter set's species (C, H).
     s.dispersion.elements = {"H", "C"};
     s.dispersion.elementEpsilon = {eH, eC};

@@ -12,6 +12,7 @@
 #include "input/hsd/dftb_input.hpp"
 #include "input/hsd/dftbplus_units.hpp"
 #include "objective/core/uff_parameters.hpp"
+#include "objective/drivers/cell_calculator.hpp"
 
 using namespace mesochain;
 using namespace mesochain::input::hsd;
@@ -235,4 +236,30 @@ TEST(DftbInput, InlineGeometryEqualsTheIncludedFile) {
   bad.replace(bad.find("    3  2"), 8, "    3  x");
   const std::string m = errorOf([&] { read("inline-bad", bad); });
   EXPECT_NE(m.find("dftb_in.hsd, line 6"), std::string::npos) << m;
+}
+
+TEST(DftbInput, UffDispersionOfAMoleculeIsTheSumOverPairs) {
+  // Methane with UFFParameters {}: the dispersion energy is the sum over the 10 pairs of the
+  // UFF-type potential (Zhechkov et al. 2005; switched polynomial inside 2^(-1/6) r0) with
+  // geometric means of Rappe et al.'s values, in DFTB+'s units.
+  const auto in = read("uff-energy", methane("  Dispersion = LennardJones { Parameters = UFFParameters {} }"));
+  const dftb::Result r = objective::makeCalculator(in).evaluate(in.cell, {true, false});
+  auto pair = [](double eps, double r0, double d) {
+    const double rs = std::pow(2.0, -1.0 / 6.0) * r0;
+    if (d >= rs) return eps * (std::pow(r0 / d, 12) - 2 * std::pow(r0 / d, 6));
+    return 396.0 / 25.0 * eps - std::pow(2.0, 5.0 / 6.0) * 672.0 / 25.0 * eps * std::pow(d / r0, 5) +
+           std::pow(2.0, 2.0 / 3.0) * 552.0 / 25.0 * eps * std::pow(d / r0, 10);
+  };
+  const double kcal = 0.0015946683859874898, bohr = 0.529177249;
+  auto eps = [&](const std::string& el) { return (el == "C" ? 0.105 : 0.044) * kcal; };
+  auto r0 = [&](const std::string& el) { return (el == "C" ? 3.851 : 2.886) / bohr; };
+  double expected = 0;
+  for (int i = 0; i < in.cell.atomCount(); ++i)
+    for (int j = i + 1; j < in.cell.atomCount(); ++j) {
+      const std::string a = in.cell.speciesOf(i), b = in.cell.speciesOf(j);
+      expected += pair(std::sqrt(eps(a) * eps(b)), std::sqrt(r0(a) * r0(b)),
+                       (in.cell.positions.col(i) - in.cell.positions.col(j)).norm());
+    }
+  EXPECT_NEAR(r.energies.at("dispersion"), expected, 1e-12 * std::abs(expected));
+  EXPECT_NE(expected, 0.0);
 }
