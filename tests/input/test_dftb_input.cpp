@@ -1,7 +1,9 @@
 // The mapping of DFTB+'s input onto the cell settings (input/hsd/dftb_input.hpp): k-point
 // schemes, units, defaults, dispersion parameters, the task; and the errors for keywords
 // outside the subset, wrong types, units DFTB+ does not accept and missing files.
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -262,4 +264,28 @@ TEST(DftbInput, UffDispersionOfAMoleculeIsTheSumOverPairs) {
     }
   EXPECT_NEAR(r.energies.at("dispersion"), expected, 1e-12 * std::abs(expected));
   EXPECT_NE(expected, 0.0);
+}
+
+TEST(DftbInput, Type2FileNamesWithLowerCaseTypeNames) {
+  // Prefix + a + Separator + b + Suffix with the element names lower-cased; the prefix relative
+  // to the folder of the input.
+  const std::string d = mesochain::testing::hsdTempDir("lowercase");
+  std::filesystem::create_directories(d + "/skf");
+  for (const char* pair : {"C-C", "C-H", "H-C", "H-H"}) {
+    std::string name = pair;  // "C-H" -> "c_h"
+    for (char& c : name) c = c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::filesystem::path target = std::filesystem::path(d) / "skf" / (name + ".table");
+    std::filesystem::copy_file(std::string(MESOCHAIN_SOURCE_DIR) + "/params/pbc-0-3/" + pair + ".skf", target,
+                               std::filesystem::copy_options::overwrite_existing);
+  }
+  std::string text = methane("");
+  const auto from = text.find("SlaterKosterFiles = Type2FileNames");
+  const auto to = text.find("}\n", from) + 2;
+  text.replace(from, to - from,
+               "SlaterKosterFiles = Type2FileNames {\n    Prefix = \"skf/\"\n    Separator = \"_\"\n"
+               "    Suffix = \".table\"\n    LowerCaseTypeName = Yes\n  }\n");
+  const std::string path = methaneInput("lowercase", text);
+  const auto in = readDftbInput(path);
+  EXPECT_EQ(in.parameterFiles.at("C-H"), d + "/skf/c_h.table");
+  EXPECT_EQ(in.parameterFiles.at("H-H"), d + "/skf/h_h.table");
 }

@@ -37,10 +37,12 @@ void expectDftbPlusGeometry(const objective::CellInput& in, const json& geometry
     EXPECT_EQ(in.cell.speciesOf(a), geometry["species"][a].get<std::string>());
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(in.cell.positions(k, a), xyz[a][k].get<double>(), 1e-12);
   }
-  if (geometry.contains("helical_translation_bohr"))
+  if (geometry.contains("helical_translation_bohr")) {
     EXPECT_NEAR(in.cell.symmetry.translation(), geometry["helical_translation_bohr"].get<double>(), 1e-12);
-  if (geometry.contains("lattice_vectors_bohr"))
+  }
+  if (geometry.contains("lattice_vectors_bohr")) {
     EXPECT_NEAR(in.cell.symmetry.translation(), geometry["lattice_vectors_bohr"][2][2].get<double>(), 1e-12);
+  }
 }
 
 double worstForce(const dftb::Result& r, const json& forces) {
