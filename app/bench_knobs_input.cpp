@@ -201,7 +201,10 @@ std::vector<KnobSetting> samplingSettings(const std::vector<std::string>& values
 
 std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& values,
                                             const dftb::DispersionSettings& own) {
-  const double r0 = own.r0 * units::kBohrInAngstrom;
+  // The largest distance of the minimum over the pairs (per-element parameters: the largest r0_A).
+  double largest = own.r0;
+  for (double r : own.elementR0) largest = std::max(largest, r);
+  const double r0 = largest * units::kBohrInAngstrom;
   const std::string expected = fmt::format(
       "cutoff:R (the LJ pairs to R Å, R > {}) or ewald (the helical Ewald sum of the r^-6 tail "
       "to the cell file's tolerance) or ewald:TOLERANCE, e.g. "

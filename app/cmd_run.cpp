@@ -1,4 +1,4 @@
-// `mesochain run CELL.toml [--json OUT] [--structure PREFIX] [--unroll N] [--plot PNG]`: energy,
+// `mesochain run CELL.toml|dftb_in.hsd [--json OUT] [--structure PREFIX] [--unroll N] [--plot PNG]`: energy,
 // forces or relaxation of an objective cell.
 #include <filesystem>
 #include <fstream>
@@ -22,6 +22,7 @@
 #include "common/progress_bar.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
+#include "input/cell_input_file.hpp"
 #include "objective/core/cell_file.hpp"
 #include "objective/core/gen_file.hpp"
 #include "objective/core/xyz_file.hpp"
@@ -98,7 +99,7 @@ void writeStructures(const std::string& prefix, const objective::CellInput& in,
 }
 
 int runCell(const RunOptions& o) {
-  const objective::CellInput in = objective::readCellFile(o.cellFile);
+  const objective::CellInput in = input::readCellInputFile(o.cellFile);
   // Every output is checked before the computation: a relaxation is not lost to a bad path.
   const std::string cl = "<command line>";
   if (!o.json.empty()) requireWritableOutput(o.json, cl, "option --json");
@@ -177,7 +178,10 @@ Command makeRunCommand() {
   Command c;
   c.attach = [opts, sub](CLI::App& app) {
     auto* s = app.add_subcommand("run", "energy, forces or relaxation of an objective cell");
-    s->add_option("cell", opts->cellFile, "objective-cell input file (TOML)")->required();
+    s->add_option("cell", opts->cellFile,
+                  "objective-cell input: a cell file (TOML) or a DFTB+ input (*.hsd, the subset of "
+                  "docs/cell-file.md)")
+        ->required();
     s->add_option("--json", opts->json, "write the results JSON here (- for the standard output)")
         ->check(nonEmptyPath());
     s->add_option("--structure", opts->structure,

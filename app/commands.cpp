@@ -4,6 +4,7 @@ namespace mesochain::app {
 
 Command makeVersionCommand();
 Command makeRunCommand();
+Command makeConvertCommand();
 Command makeDemCommand();
 Command makeBenchCommand();
 Command makeBuildCommand();
@@ -13,7 +14,7 @@ Command makeSkgenCommand();
 Command makeChainCommand();
 
 std::vector<Command> allCommands() {
-  return {makeVersionCommand(), makeRunCommand(),   makeScanCommand(), makeBuildCommand(),
+  return {makeVersionCommand(), makeRunCommand(),   makeConvertCommand(), makeScanCommand(), makeBuildCommand(),
           makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand(), makeChainCommand()};
 }
 

@@ -22,10 +22,21 @@ ewald::LatticeSumSettings settingsFor(double tolerance) {
   s.tolerance = tolerance;
   return s;
 }
+
+SpeciesPairTable<LjShortRange> shortRangePairs(const SpeciesPairTable<UffLennardJones>& lj) {
+  SpeciesPairTable<LjShortRange> t;
+  t.speciesCount = lj.speciesCount;
+  for (const UffLennardJones& p : lj.pairs) t.pairs.emplace_back(p);
+  return t;
+}
 }  // namespace
 
 EwaldDispersionTerm::EwaldDispersionTerm(const UffLennardJones& lj, double tolerance)
-    : shortTerm_("dispersion_short", SamePotentialEvaluator<LjShortRange>{LjShortRange(lj)}),
+    : EwaldDispersionTerm(SpeciesPairTable<UffLennardJones>{{lj}, 0}, tolerance) {}
+
+EwaldDispersionTerm::EwaldDispersionTerm(const SpeciesPairTable<UffLennardJones>& lj,
+                                         double tolerance)
+    : shortTerm_("dispersion_short", shortRangePairs(lj)),
       sum_(ewald::Kernel::InverseSixth, settingsFor(tolerance)) {}
 
 void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
@@ -37,7 +48,10 @@ void EwaldDispersionTerm::evaluate(const objective::ObjectiveCell& cell,
   out.dEdTranslation = shortPart.dEdTranslation;
   out.dEdTwist = shortPart.dEdTwist;
   const int n = cell.atomCount();
-  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(n, n, -shortTerm_.evaluator().potential.c6());
+  Eigen::MatrixXd w(n, n);
+  const SpeciesPairTable<LjShortRange>& pairs = shortTerm_.evaluator();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) w(i, j) = -pairs.pair(cell.species[i], cell.species[j]).c6();
   ewald::LatticeSumPlan used;  // the plan the sum ran with, reported without planning again
   if (request.gradient || request.strain) {
     const auto d = sum_.derivatives(cell, w, &used);

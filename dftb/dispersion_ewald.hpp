@@ -30,12 +30,14 @@ class EwaldDispersionTerm final : public EnergyTerm {
  public:
   // tolerance: relative accuracy of the Ewald sum (ewald::LatticeSumSettings).
   EwaldDispersionTerm(const UffLennardJones& lj, double tolerance);
+  // A potential per species pair (C6_ij = 2 eps_ij r0_ij^6 weights the 1/r^6 sum of pair i, j).
+  EwaldDispersionTerm(const SpeciesPairTable<UffLennardJones>& lj, double tolerance);
   std::string name() const override { return "dispersion"; }
   void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
                 TermOutput& out) const override;
 
  private:
-  PairTerm<SamePotentialEvaluator<LjShortRange>> shortTerm_;
+  PairTerm<SpeciesPairTable<LjShortRange>> shortTerm_;
   ewald::HelicalLatticeSum sum_;
 };
 

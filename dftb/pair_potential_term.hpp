@@ -10,9 +10,11 @@
 //   void operator()(int si, int sj, double r, double& v, double& dv) const;  // V, dV/dr
 // for the species indices si, sj of the two atoms (cell.species). The term reports one ledger
 // entry, Energy, under its name.
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "dftb/energy_term.hpp"
 #include "dftb/image_pair_sum.hpp"
@@ -54,6 +56,24 @@ struct SamePotentialEvaluator {
   Potential potential;
   double cutoff() const { return potential.cutoff(); }
   void operator()(int, int, double r, double& v, double& dv) const { potential.evaluate(r, v, dv); }
+};
+
+// A potential per ordered species pair in a table (species indices of cell.speciesNames, which
+// the calculator keeps in the parameter set's order), or one potential for every pair
+// (speciesCount = 0, `pairs` of size 1). Potential: a `final` RadialPotential (direct calls).
+template <class Potential>
+struct SpeciesPairTable {
+  std::vector<Potential> pairs;  // speciesCount^2 entries, [si * speciesCount + sj]; or 1
+  int speciesCount = 0;
+  const Potential& pair(int si, int sj) const {
+    return speciesCount ? pairs[static_cast<std::size_t>(si) * speciesCount + sj] : pairs.front();
+  }
+  double cutoff() const {
+    double c = 0.0;
+    for (const Potential& p : pairs) c = std::max(c, p.cutoff());
+    return c;
+  }
+  void operator()(int si, int sj, double r, double& v, double& dv) const { pair(si, sj).evaluate(r, v, dv); }
 };
 
 // A potential per species pair looked up through a function (the tables' repulsive splines,

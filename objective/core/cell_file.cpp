@@ -18,6 +18,7 @@
 #include "objective/core/cell_file_sections.hpp"
 #include "objective/core/text_reader.hpp"
 #include "objective/core/toml_table.hpp"
+#include "objective/core/uff_parameters.hpp"
 
 #ifndef MESOCHAIN_PARAMS_DIR
 #error "MESOCHAIN_PARAMS_DIR must be defined (objective/core/CMakeLists.txt)"
@@ -221,19 +222,46 @@ void readKolmogorovCrespi(const TomlTable& t, DispersionInput& d, Positive&& pos
            "a covalent cutoff below 2.2 Å (the second neighbours of graphene are at 2.46 Å)");
 }
 
+// [dispersion] elements = { C = { epsilon = ..., r0 = ... }, ... }: every element of the cell.
+void readLjElements(const TomlTable& t, CellInput& in) {
+  const toml::value& v = t.at("elements");
+  const char* shape = "an inline table of the elements of the cell, such as { C = { epsilon = 0.105, "
+                      "r0 = 3.851 }, H = { epsilon = 0.044, r0 = 2.886 } } (kcal/mol, Å)";
+  if (!v.is_table()) t.fail("elements", detail::describe(v), shape);
+  const TomlTable e(in.source, v, t.dotted("elements"));
+  const auto& species = in.cell.speciesNames;
+  for (const std::string& el : e.keys()) {
+    if (std::find(species.begin(), species.end(), el) == species.end())
+      e.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
+    const toml::value& entry = e.at(el);
+    if (!entry.is_table()) e.fail(el, detail::describe(entry), "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
+    const TomlTable p(in.source, entry, e.dotted(el));
+    p.allowOnly({"epsilon", "r0"});
+    const double eps = p.number("epsilon", "a positive well depth (kcal/mol)");
+    if (!(eps > 0.0)) p.fail("epsilon", fmt::format("{} kcal/mol", eps), "a positive well depth (kcal/mol)");
+    const double r0 = p.number("r0", "a positive distance of the minimum (Å)");
+    if (!(r0 > 0.0)) p.fail("r0", fmt::format("{} Å", r0), "a positive distance of the minimum (Å)");
+    in.dispersion.elements[el] = {eps * units::kKcalPerMolInHartree, r0 * units::kAngstromInBohr};
+  }
+  for (const std::string& el : species)
+    if (!in.dispersion.elements.count(el))
+      t.fail("elements", "no entry for element " + el, std::string("an entry for every element of the cell: ") + shape);
+}
+
 void readDispersion(const TomlTable& root, CellInput& in) {
   const auto t = root.table("dispersion");
   if (!t) return;  // documented default: no dispersion
-  const std::vector<std::string> ljKeys{"epsilon", "r0", "summation", "ewald_tolerance"};
-  const std::vector<std::string> kcKeys{"parameters", "taper_start", "bond_cutoff"};
-  t->allowOnly({"model", "epsilon", "r0", "cutoff", "summation", "ewald_tolerance", "parameters",
+  const std::vector<std::string> ljKeys{"epsilon", "r0", "elements", "summation", "ewald_tolerance"};
+  const std::vector<std::string> kcKeys{"taper_start", "bond_cutoff"};
+  // `parameters` belongs to both models: "uff" for lj, "kc2005" | "ouyang2018" for kc.
+  t->allowOnly({"model", "epsilon", "r0", "parameters", "elements", "cutoff", "summation", "ewald_tolerance",
                 "taper_start", "bond_cutoff"});
   DispersionInput& d = in.dispersion;
   const char* models = "\"none\", \"lj\" or \"kc\"";
   d.model = t->string("model", models);
   if (d.model == "none") {
-    for (const char* k : {"epsilon", "r0", "cutoff", "summation", "ewald_tolerance",
-                          "parameters", "taper_start", "bond_cutoff"})
+    for (const char* k : {"epsilon", "r0", "parameters", "elements", "cutoff", "summation", "ewald_tolerance",
+                          "taper_start", "bond_cutoff"})
       if (t->has(k)) t->fail(k, "a value with model = \"none\"", "no parameters for \"none\"");
     return;
   }
@@ -253,9 +281,34 @@ void readDispersion(const TomlTable& root, CellInput& in) {
     readKolmogorovCrespi(*t, d, positive);
     return;
   }
-  d.epsilon =
-      positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
-  d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;
+  // One of: epsilon and r0 for every pair (defaults below), parameters = "uff", elements = {...}.
+  const char* sources = "one of: epsilon and r0 (every pair), parameters = \"uff\", or elements = { ... }";
+  if (t->has("parameters") || t->has("elements")) {
+    for (const char* k : {"epsilon", "r0"})
+      if (t->has(k)) t->fail(k, std::string(k) + " together with per-element parameters", sources);
+    if (t->has("parameters") && t->has("elements"))
+      t->fail("elements", "both parameters and elements", sources);
+  }
+  if (t->has("parameters")) {
+    d.parameters = t->string("parameters", "\"uff\" (the UFF set of Rappe et al. 1992)");
+    if (d.parameters != "uff")
+      t->fail("parameters", "\"" + d.parameters + "\"", "\"uff\" (the UFF set of Rappe et al. 1992)");
+    for (const std::string& el : in.cell.speciesNames) {
+      const auto uff = uffParameters(el);
+      if (!uff)
+        t->fail("parameters", "element " + el + ", which has no UFF entry in mesochain's table (" +
+                                  uffElementRange() + ")",
+                "elements = { " + el + " = { epsilon = ..., r0 = ... }, ... } with explicit values");
+      d.elements[el] = {uff->energyKcalPerMol * units::kKcalPerMolInHartree,
+                        uff->distanceAngstrom * units::kAngstromInBohr};
+    }
+  } else if (t->has("elements")) {
+    readLjElements(*t, in);
+  } else {
+    d.epsilon =
+        positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
+    d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;
+  }
   d.cutoff = positive("cutoff", kDefaultLjCutoffAngstrom, "Å") * units::kAngstromInBohr;
   // The image list grows with the cutoff (a 1e6 Å cutoff would list ~1e6 images per atom pair
   // and exhaust the memory); beyond 1000 Å the neglected tail is below 3e-10 kcal/mol per atom
@@ -264,10 +317,12 @@ void readDispersion(const TomlTable& root, CellInput& in) {
     t->fail("cutoff", fmt::format("{} Å", d.cutoff * units::kBohrInAngstrom),
             fmt::format("a cutoff of at most {} Å (summation = \"ewald\" for the exact tail)",
                         kMaximumLjCutoffAngstrom));
-  if (!(d.cutoff > d.r0))
-    t->fail(t->has("cutoff") ? "cutoff" : "r0",
+  double largestR0 = d.r0;
+  for (const auto& [el, p] : d.elements) largestR0 = std::max(largestR0, p.r0);
+  if (!(d.cutoff > largestR0))
+    t->fail(t->has("cutoff") ? "cutoff" : t->has("r0") ? "r0" : t->has("elements") ? "elements" : "parameters",
             fmt::format("cutoff {:.4g} Å <= r0 {:.4g} Å", d.cutoff * units::kBohrInAngstrom,
-                        d.r0 * units::kBohrInAngstrom),
+                        largestR0 * units::kBohrInAngstrom),
             "a cutoff well beyond r0 (default 30 Å)");
   if (t->has("summation")) {
     d.summation = t->string("summation", "\"cutoff\" or \"ewald\"");

@@ -35,10 +35,21 @@ inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 inline constexpr double kDefaultKcBondCutoffAngstrom = 1.7;
 inline constexpr double kMaximumKcCutoffAngstrom = 100.0;
 
+// Per-element Lennard-Jones parameters ([dispersion] parameters = "uff" or elements = {...}).
+struct LjElementInput {
+  double epsilon = 0;  // Hartree, well depth
+  double r0 = 0;       // Bohr, position of the minimum
+};
+
 struct DispersionInput {
   std::string model = "none";  // "none" | "lj" | "kc"
-  double epsilon = 0;          // Hartree (lj)
+  double epsilon = 0;          // Hartree (lj: one parameter set for every pair; 0 with `elements`)
   double r0 = 0;               // Bohr (lj)
+  // lj: "" (epsilon, r0 or explicit elements) | "uff" (objective/core/uff_parameters.hpp)
+  std::string parameters;
+  // lj, per element of the cell, when non-empty (then epsilon = r0 = 0): pairs combine by
+  // geometric means, as DFTB+ (dftb::DispersionSettings).
+  std::map<std::string, LjElementInput> elements;
   double cutoff = 0;           // Bohr (lj; kc: 0 = the parameter set's)
   std::string summation = "cutoff";  // r^-6 tail: "cutoff" | "ewald" (lj)
   double ewaldTolerance = 1e-8;      // relative, with summation = "ewald" (lj)

@@ -93,11 +93,23 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   }
   const DispersionInput& d = in.dispersion;
   out << "\n[dispersion]\nmodel = " << quoted(d.model) << "\n";
-  if (d.model == "lj")
-    out << fmt::format("epsilon = {}  # kcal/mol\nr0 = {}  # Å\ncutoff = {}  # Å\n",
-                       real(d.epsilon * units::kHartreeInKcalPerMol),
-                       real(d.r0 * units::kBohrInAngstrom),
-                       real(d.cutoff * units::kBohrInAngstrom));
+  if (d.model == "lj" && d.parameters == "uff") {
+    out << "parameters = \"uff\"\n";
+  } else if (d.model == "lj" && !d.elements.empty()) {
+    out << "elements = {";
+    bool first = true;
+    for (const auto& [el, p] : d.elements) {
+      out << (first ? " " : ", ")
+          << fmt::format("{} = {{ epsilon = {}, r0 = {} }}", el, real(p.epsilon * units::kHartreeInKcalPerMol),
+                         real(p.r0 * units::kBohrInAngstrom));
+      first = false;
+    }
+    out << " }  # kcal/mol, Å\n";
+  } else if (d.model == "lj") {
+    out << fmt::format("epsilon = {}  # kcal/mol\nr0 = {}  # Å\n", real(d.epsilon * units::kHartreeInKcalPerMol),
+                       real(d.r0 * units::kBohrInAngstrom));
+  }
+  if (d.model == "lj") out << fmt::format("cutoff = {}  # Å\n", real(d.cutoff * units::kBohrInAngstrom));
   if (d.model == "kc") {
     out << "parameters = " << quoted(d.kcParameters) << "\n";
     if (d.cutoff > 0.0)

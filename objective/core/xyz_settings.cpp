@@ -49,8 +49,17 @@ std::string xyzSettingsKeys(const CellInput& in) {
   const DispersionInput& d = in.dispersion;
   add("dispersion.model", d.model);
   if (d.model == "lj") {
-    add("dispersion.epsilon", real(d.epsilon * units::kHartreeInKcalPerMol));
-    add("dispersion.r0", real(d.r0 * units::kBohrInAngstrom));
+    if (d.parameters == "uff") {
+      add("dispersion.parameters", d.parameters);
+    } else if (!d.elements.empty()) {
+      for (const auto& [el, p] : d.elements) {
+        add("dispersion.elements." + el + ".epsilon", real(p.epsilon * units::kHartreeInKcalPerMol));
+        add("dispersion.elements." + el + ".r0", real(p.r0 * units::kBohrInAngstrom));
+      }
+    } else {
+      add("dispersion.epsilon", real(d.epsilon * units::kHartreeInKcalPerMol));
+      add("dispersion.r0", real(d.r0 * units::kBohrInAngstrom));
+    }
     add("dispersion.cutoff", real(d.cutoff * units::kBohrInAngstrom));
     add("dispersion.summation", d.summation);
     if (d.summation == "ewald") add("dispersion.ewald_tolerance", real(d.ewaldTolerance));

@@ -19,6 +19,11 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
     s.dispersion.cutoff = in.dispersion.cutoff;
     s.dispersion.ewald = in.dispersion.summation == "ewald";
     s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
+    for (const auto& [element, p] : in.dispersion.elements) {
+      s.dispersion.elements.push_back(element);
+      s.dispersion.elementEpsilon.push_back(p.epsilon);
+      s.dispersion.elementR0.push_back(p.r0);
+    }
   }
   if (in.dispersion.model == "kc") {
     s.kc.enabled = true;

@@ -42,13 +42,16 @@ void forEachField(S& s, F&& f) {
 template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, dftb::DispersionSettings>
 void forEachField(S& s, F&& f) {
-  auto& [enabled, epsilon, r0, cutoff, ewald, ewaldTolerance] = s;
+  auto& [enabled, epsilon, r0, cutoff, ewald, ewaldTolerance, elements, elementEpsilon, elementR0] = s;
   f("enabled", enabled, FieldRole::Result);
   f("epsilon_hartree", epsilon, FieldRole::Result);
   f("r0_bohr", r0, FieldRole::Result);
   f("cutoff_bohr", cutoff, FieldRole::Result);
   f("ewald", ewald, FieldRole::Result);
   f("ewald_tolerance", ewaldTolerance, FieldRole::Result);
+  f("elements", elements, FieldRole::Result);
+  f("element_epsilon_hartree", elementEpsilon, FieldRole::Result);
+  f("element_r0_bohr", elementR0, FieldRole::Result);
 }
 
 template <class S, class F>

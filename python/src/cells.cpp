@@ -100,6 +100,15 @@ py::dict dispersionDict(const objective::DispersionInput& d) {
   if (d.model == "lj") {
     out["epsilon"] = d.epsilon;
     out["r0"] = d.r0;
+    out["parameters"] = d.parameters;
+    py::dict elements;
+    for (const auto& [el, p] : d.elements) {
+      py::dict e;
+      e["epsilon"] = p.epsilon;
+      e["r0"] = p.r0;
+      elements[py::str(el)] = e;
+    }
+    out["elements"] = elements;
     out["cutoff"] = d.cutoff;
     out["summation"] = d.summation;
     out["ewald_tolerance"] = d.ewaldTolerance;
@@ -205,7 +214,8 @@ void bindCells(py::module_& m) {
       .def_readonly("parameter_files", &CellInput::parameterFiles)
       .def_readonly("max_angular_momentum", &CellInput::maxAngularMomentum)
       .def_property_readonly("dispersion", [](const CellInput& in) { return dispersionDict(in.dispersion); },
-                             "model and (lj) epsilon (Hartree), r0, cutoff (Bohr), summation")
+                             "model and (lj) epsilon (Hartree), r0, cutoff (Bohr), summation, parameters (\"uff\" or \"\"), "
+                             "elements (per element epsilon, r0)")
       .def_property_readonly("scc", [](const CellInput& in) { return sccDict(in.scc); })
       .def_property_readonly("task", [](const CellInput& in) { return taskDict(in.task); },
                              "type, force_tolerance (Ha/Bohr), max_steps, relax_translation")

@@ -129,6 +129,13 @@ std::vector<TermCase> cases() {
                withDispersion(carbonSettings(1, 800.0), false), armchair, 1e-8, 2});
   c.push_back({"dispersion", "helical Ewald sum, distorted (4,4) tube", carbon,
                withDispersion(carbonSettings(1, 800.0), true), armchair, 1e-8, 2});
+  // Per-element parameters (UFF C and H, DFTB+'s geometric-mean combination) on a C-H chain.
+  CalculatorSettings ch = withDispersion(carbonSettings(1, 800.0), true);
+  ch.dispersion.elements = {"C", "H"};
+  ch.dispersion.elementEpsilon = {0.105 * units::kKcalPerMolInHartree, 0.044 * units::kKcalPerMolInHartree};
+  ch.dispersion.elementR0 = {3.851 * units::kAngstromInBohr, 2.886 * units::kAngstromInBohr};
+  c.push_back({"dispersion", "per-element UFF C/H, helical Ewald sum, helical CH chain",
+               testing::chParameters(), ch, testing::helicalChUnit(), 1e-8, 2});
   c.push_back({"test_soft_pair", "distorted (4,4) tube", carbon, carbonSettings(1, 800.0),
                armchair, 1e-8, 3});
   // Kolmogorov-Crespi: across a small tube (normals of a curved, distorted sheet), and between

@@ -1,0 +1,27 @@
+#include "input/cell_input_file.hpp"
+
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "common/toml_file.hpp"
+
+#include "input/hsd/dftb_input.hpp"
+#include "input/hsd/hsd_tree.hpp"
+
+namespace mesochain::input {
+
+bool isDftbInput(const std::string& path) {
+  return hsd::lowerCase(std::filesystem::path(path).extension().string()) == ".hsd";
+}
+
+objective::CellInput readCellInputFile(const std::string& path) {
+  if (!isDftbInput(path)) return objective::readCellFile(path);
+  // --set overrides keys of TOML files; silently not applying them would be wrong.
+  if (tomlOverridesUnused())
+    throw InputError("<command line>", "option --set", "--set with the DFTB+ input " + path,
+                     "no --set (it overrides keys of TOML inputs): edit the .hsd, or `mesochain convert` it "
+                     "to a cell file and use --set on that");
+  return hsd::readDftbInput(path);
+}
+
+}  // namespace mesochain::input

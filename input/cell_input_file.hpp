@@ -1,0 +1,13 @@
+#pragma once
+// The objective-cell settings from any input format mesochain reads: a DFTB+ input (a file
+// ending in .hsd, input/hsd/dftb_input.hpp) or a cell file (TOML, objective/core/cell_file.hpp).
+#include <string>
+
+#include "objective/core/cell_file.hpp"
+
+namespace mesochain::input {
+
+bool isDftbInput(const std::string& path);
+objective::CellInput readCellInputFile(const std::string& path);
+
+}  // namespace mesochain::input
