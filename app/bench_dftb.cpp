@@ -31,6 +31,7 @@
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/nanotube_builder.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::app {
 
@@ -92,8 +93,9 @@ const char* pathName(dftb::EigenvectorPath p) {
 }
 
 int benchDftb(const std::string& table, int repeats, bool comparePaths) {
-  std::cout << fmt::format("mesochain bench dftb: {} OpenMP threads, {} repeats, table {}\n",
-                           omp_get_max_threads(), repeats, table);
+  std::cout << fmt::format("mesochain bench dftb: {} MPI ranks x {} OpenMP threads, {} repeats, table {}\n",
+                           parallel::Communicator::world().size(), omp_get_max_threads(), repeats,
+                           table);
   const double bond = 1.42 * units::kAngstromInBohr;
   using dftb::EigenvectorPath;
   std::vector<EigenvectorPath> paths{EigenvectorPath::Automatic};
