@@ -13,6 +13,11 @@ constexpr double kMax = 536870912.0;  // 2^29
 }  // namespace
 
 void ExactSum::add(std::size_t offset, const double* x, std::size_t count) {
+  // Scaling by a power of two is exact in this range, and so is y - (integer part of y); the
+  // integer parts are taken by truncation toward zero (one instruction each, no libm call). The
+  // only rounding is the truncation of the last limb at 2^-90, a function of the term alone.
+  constexpr double kTop = 1024.0;              // 2^10
+  constexpr double kLimb = 1099511627776.0;    // 2^40
   std::int64_t* l = limbs_.data() + 3 * offset;
   for (std::size_t i = 0; i < count; ++i, l += 3) {
     const double v = x[i];
@@ -20,16 +25,14 @@ void ExactSum::add(std::size_t offset, const double* x, std::size_t count) {
     if (!(std::abs(v) < kMax))
       throw NumericalError("exact sum: a term " + std::to_string(v) +
                            " that is not finite or not below 2^29 in magnitude");
-    // Splits v exactly: y - trunc(y) is exact, and so is scaling by a power of two.
-    double y = std::ldexp(v, 10);  // the integer part is l2 (|l2| < 2^39)
-    const double t2 = std::trunc(y);
-    y = std::ldexp(y - t2, kLimbBits);
-    const double t1 = std::trunc(y);
-    y = std::ldexp(y - t1, kLimbBits);
-    const double t0 = std::nearbyint(y);  // the only rounding: at 2^-90
-    l[0] += static_cast<std::int64_t>(t0);
-    l[1] += static_cast<std::int64_t>(t1);
-    l[2] += static_cast<std::int64_t>(t2);
+    const double y2 = v * kTop;  // integer part: l2, |l2| < 2^39
+    const auto t2 = static_cast<std::int64_t>(y2);
+    const double y1 = (y2 - static_cast<double>(t2)) * kLimb;
+    const auto t1 = static_cast<std::int64_t>(y1);
+    const double y0 = (y1 - static_cast<double>(t1)) * kLimb;
+    l[0] += static_cast<std::int64_t>(y0);
+    l[1] += t1;
+    l[2] += t2;
   }
 }
 

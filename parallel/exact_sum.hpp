@@ -2,12 +2,12 @@
 // parallel::ExactSum: sums of doubles that do not depend on the order of the terms, so that a
 // sum split over threads and ranks in any way gives the same bits as the serial loop.
 //
-// Each term is rounded once to a fixed-point grid of quantum 2^-90 (far below a double's
-// resolution for the magnitudes summed here) and held as three 64-bit integer limbs of 40 bits
-// (value = (l2 2^80 + l1 2^40 + l0) 2^-90); limbs are added as integers, which is exact and
-// associative, with 23 bits of headroom per limb (up to 2^22 terms per element). This is the
-// long-accumulator idea (Kulisch; cf. the reproducible summation of Demmel & Nguyen, IEEE Trans.
-// Comput. 64, 2060 (2015)) in its simplest form. Terms must be finite and below 2^29 in
+// Each term is cut once to a fixed-point grid of quantum 2^-90 (truncated toward zero; far
+// below a double's resolution for the magnitudes summed here) and held as three 64-bit integer
+// limbs of 40 bits (value = (l2 2^80 + l1 2^40 + l0) 2^-90); limbs are added as integers, which
+// is exact and associative, with 23 bits of headroom per limb (up to 2^22 terms per element).
+// This is the long-accumulator idea (Kulisch; cf. the reproducible summation of Demmel &
+// Nguyen, IEEE Trans. Comput. 64, 2060 (2015)) in its simplest form. Terms must be finite and below 2^29 in
 // magnitude; others are a NumericalError.
 //
 // Cost: a few flops per term, and 3 integers per element (Communicator::sumInPlace sums them
