@@ -8,7 +8,9 @@
 // the size at which Automatic switches.
 // `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob),
 // as a table, optionally CSV and a PNG (error vs kappa points and error vs time, log-log).
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -31,6 +33,7 @@
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/nanotube_builder.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::app {
 
@@ -53,12 +56,17 @@ dftb::Calculator calculator(const std::string& table, int nKappa, double kelvin,
 
 struct Timing {
   double perEvaluation = 0, eigensolver = 0, assembly = 0, density = 0, forces = 0, other = 0;
+  // Each rank's process CPU seconds per evaluation (all its threads), rank order (one entry
+  // without MPI); the largest is the critical path, less sensitive to other load on a shared
+  // machine than the wall time.
+  std::vector<double> cpuPerRank;
 };
 
 Timing timeEvaluations(const dftb::Calculator& calc, const objective::ObjectiveCell& cell,
                        int repeats) {
   calc.evaluate(cell, {true, true});  // warm-up
   Timing t;
+  const std::clock_t cpu0 = std::clock();
   for (int r = 0; r < repeats; ++r) {
     const auto a = Clock::now();
     const dftb::Result res = calc.evaluate(cell, {true, true});
@@ -70,6 +78,8 @@ Timing timeEvaluations(const dftb::Calculator& calc, const objective::ObjectiveC
   }
   for (double* x : {&t.perEvaluation, &t.eigensolver, &t.assembly, &t.density, &t.forces})
     *x /= repeats;
+  const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC / repeats;
+  t.cpuPerRank = calc.communicator().allgather({cpu});
   t.other = t.perEvaluation - t.eigensolver - t.assembly - t.density - t.forces;
   return t;
 }
@@ -81,6 +91,17 @@ void report(const std::string& name, const Timing& t) {
       name, t.perEvaluation, 100 * t.eigensolver / t.perEvaluation,
       100 * t.assembly / t.perEvaluation, 100 * t.density / t.perEvaluation,
       100 * t.forces / t.perEvaluation, 100 * t.other / t.perEvaluation);
+  if (!t.cpuPerRank.empty()) {
+    std::string ranks;
+    double sum = 0, most = 0;
+    for (double c : t.cpuPerRank) {
+      ranks += fmt::format(" {:.4f}", c);
+      sum += c;
+      most = std::max(most, c);
+    }
+    std::cout << fmt::format("  CPU s per evaluation by rank:{} | sum {:.4f} | largest {:.4f}\n",
+                             ranks, sum, most);
+  }
 }
 
 const char* pathName(dftb::EigenvectorPath p) {
@@ -92,8 +113,9 @@ const char* pathName(dftb::EigenvectorPath p) {
 }
 
 int benchDftb(const std::string& table, int repeats, bool comparePaths) {
-  std::cout << fmt::format("mesochain bench dftb: {} OpenMP threads, {} repeats, table {}\n",
-                           omp_get_max_threads(), repeats, table);
+  std::cout << fmt::format("mesochain bench dftb: {} MPI ranks x {} OpenMP threads, {} repeats, table {}\n",
+                           parallel::Communicator::world().size(), omp_get_max_threads(), repeats,
+                           table);
   const double bond = 1.42 * units::kAngstromInBohr;
   using dftb::EigenvectorPath;
   std::vector<EigenvectorPath> paths{EigenvectorPath::Automatic};

@@ -206,7 +206,8 @@ Row relaxationRow(const std::string& path, const beam::ScanCurve& curve, const K
 
 void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vector<Row>& rows,
                   const json& header) {
-  if (!o.csv.empty()) {
+  // Under mpirun only rank 0 writes (common/atomic_file.hpp, fileOutputEnabled).
+  if (!o.csv.empty() && fileOutputEnabled()) {
     std::ofstream out(o.csv);
     if (!out) throw InputError(o.csv, "cannot open the CSV output for writing");
     out << "knob,setting,scan_setting,reference,constant,uncertainty,relative_difference,"
@@ -219,7 +220,7 @@ void writeOutputs(const KnobsOptions& o, const FinishedScan& f, const std::vecto
                          r.totalWall, r.evaluations, r.maxForce, csvField(r.note));
     std::cerr << "wrote " << o.csv << "\n";
   }
-  if (!o.json.empty()) {
+  if (!o.json.empty() && fileOutputEnabled()) {
     json j = header;
     j["rows"] = json::array();
     auto num = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };

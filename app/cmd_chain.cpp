@@ -3,10 +3,13 @@
 #include <memory>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "app/chain_run.hpp"
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "common/errors.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::app {
 
@@ -22,7 +25,15 @@ Command makeChainCommand() {
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
-  c.run = [opt] { return runChain(*opt); };
+  c.run = [opt] {
+    // The chain reads back the curves it wrote, which only rank 0 writes (docs/cluster.md).
+    if (parallel::Communicator::world().size() > 1)
+      throw InputError("<command line>", "mesochain chain",
+                       fmt::format("{} MPI ranks", parallel::Communicator::world().size()),
+                       "one process (run the chain without mpirun; `mpirun ... mesochain scan` "
+                       "distributes a scan)");
+    return runChain(*opt);
+  };
   return c;
 }
 

@@ -152,7 +152,7 @@ int runScanCommand(const ScanOptions& o) {
   printTable(std::cout, r);
   objective::writeScanCurve(r, in.jsonPath, in.csvPath);
   std::cerr << "wrote " << in.jsonPath << (in.csvPath.empty() ? "" : " and " + in.csvPath) << "\n";
-  if (r.complete) {
+  if (r.complete && fileOutputEnabled()) {  // read back from the JSON, which rank 0 alone writes
     std::string png = o.png;
     if (png.empty()) png = std::filesystem::path(in.jsonPath).replace_extension(".png").string();
     writeScanPlot(in.jsonPath, png);

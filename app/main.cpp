@@ -2,6 +2,9 @@
 // One subcommand per driver file (app/cmd_*.cpp); each registers itself in commands.hpp.
 // Global options (before or after the subcommand): --version, -q, -v, --set; exit codes in
 // app/exit_codes.hpp (docs/command-line.md).
+// Under mpirun (docs/cluster.md) every rank runs the same command: the calculators share their
+// k-points over the ranks, rank 0 alone prints and writes files, and an error ends every rank
+// with its message printed once (parallel/session.hpp).
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -10,13 +13,18 @@
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "common/atomic_file.hpp"
 #include "common/build_info.hpp"
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
 #include "common/toml_file.hpp"
+#include "parallel/session.hpp"
 
 int main(int argc, char** argv) {
   using namespace mesochain;
+  parallel::Session mpi(argc, argv);
+  mpi.silenceOtherRanks();
+  if (mpi.rank() != 0) setFileOutputEnabled(false);
   CLI::App app{"mesochain: objective-cell DFTB, beams and mesoscale DEM for carbon filaments"};
   // Every option's default is shown in --help; options of the main program are also accepted
   // after the subcommand.
@@ -65,9 +73,11 @@ int main(int argc, char** argv) {
       }
   } catch (const InputError& e) {
     std::cerr << "mesochain: error: " << e.what() << "\n";
+    mpi.endAfterError(e.what(), app::kUsageError);
     return app::kUsageError;
   } catch (const std::exception& e) {
     std::cerr << "mesochain: error: " << e.what() << "\n";
+    mpi.endAfterError(e.what(), app::kFailure);
     return app::kFailure;
   }
   return app::kSuccess;

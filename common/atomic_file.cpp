@@ -32,8 +32,20 @@ void renameOver(const std::string& from, const std::string& to) {
 
 bool isStandardOutput(const std::string& path) { return path == "-"; }
 
+namespace {
+bool fileOutput = true;
+}  // namespace
+void setFileOutputEnabled(bool enabled) { fileOutput = enabled; }
+bool fileOutputEnabled() { return fileOutput; }
+
 AtomicOutputFile::AtomicOutputFile(std::string path)
     : path_(std::move(path)), temporary_(isStandardOutput(path_) ? std::string() : temporaryName(path_)) {
+  if (!fileOutput && !isStandardOutput(path_)) {
+    discarded_ = true;
+    temporary_ = "/dev/null";
+    stream_.open(temporary_, std::ios::binary);
+    return;
+  }
   if (isStandardOutput(path_)) {
     // "-": the standard output, written directly (appending, so nothing already written to it
     // is truncated; the caller sends its own messages to stderr).
@@ -49,7 +61,7 @@ AtomicOutputFile::AtomicOutputFile(std::string path)
 }
 
 AtomicOutputFile::~AtomicOutputFile() {
-  if (committed_) return;
+  if (committed_ || discarded_) return;
   stream_.close();
   if (temporary_.empty()) return;
   std::error_code ec;
@@ -57,6 +69,11 @@ AtomicOutputFile::~AtomicOutputFile() {
 }
 
 void AtomicOutputFile::commit() {
+  if (discarded_) {
+    stream_.close();
+    committed_ = true;
+    return;
+  }
   bool ok = true;
   if (stream_.is_open()) {  // (closed already when a C library wrote temporaryPath())
     stream_.flush();

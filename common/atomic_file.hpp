@@ -13,6 +13,12 @@ namespace mesochain {
 // to stdout directly, and requireWritableOutput accepts it. (A file named "-" is ./-.)
 bool isStandardOutput(const std::string& path);
 
+// Whether this process writes output files (default true). Under mpirun the ranks other than 0
+// switch it off (app/main.cpp): every rank runs the same code, rank 0 alone writes. Switched
+// off, writeFileAtomically and AtomicOutputFile write to /dev/null and create nothing.
+void setFileOutputEnabled(bool enabled);
+bool fileOutputEnabled();
+
 // Writes `text` to `path` atomically. InputError naming `path` when the temporary file cannot
 // be created or written (folder missing, not writable, disk full) or the rename fails.
 void writeFileAtomically(const std::string& path, const std::string& text);
@@ -39,6 +45,7 @@ class AtomicOutputFile {
   std::string temporary_;
   std::ofstream stream_;
   bool committed_ = false;
+  bool discarded_ = false;  // file output switched off: the stream goes to /dev/null
 };
 
 // Checks before a computation that an output can be created at `path`: its folder exists and is

@@ -7,6 +7,8 @@
 #include <omp.h>
 
 #include "common/errors.hpp"
+#include "parallel/exact_sum.hpp"
+#include "parallel/work_split.hpp"
 
 // OpenBLAS's own threads would compete with the k-point threads; switch them off while the
 // k loop runs (weak: absent when another BLAS is in use).
@@ -44,8 +46,9 @@ struct ThreadWork {
   ComplexMatrix sk, c, x, y;  // c: eigenvectors of the occupied states (OccupiedOnly)
   Eigen::MatrixXd sr, cr;
   GeneralizedEigensolver solver;
-  std::vector<OrbitalBlock> p, w;
+  std::vector<OrbitalBlock> p, w;  // one k-point's contribution
   Eigen::VectorXd onsite;
+  parallel::ExactSum sum;  // this thread's k-points: P blocks, W blocks, on-site diagonal
   double tAssembly = 0, tSolve = 0, tVectors = 0, tDensity = 0;
 };
 }  // namespace
@@ -60,17 +63,28 @@ BandGeometry::BandGeometry(const ObjectiveCell& cell, const ParameterSet& params
     electrons += params.species(cell.species[a]).valenceElectrons;
 }
 
-OverlapFactors::OverlapFactors(const BandGeometry& geo, double byteBudget) {
+std::vector<int> kpointOwners(const objective::HelicalKGrid& grid,
+                              const parallel::Communicator& comm) {
+  std::vector<double> cost;
+  for (const auto& kp : grid.points()) cost.push_back(kp.realPhases ? 1.0 : 4.0);
+  return parallel::balancedOwners(cost, comm.size());
+}
+
+OverlapFactors::OverlapFactors(const BandGeometry& geo, double byteBudget,
+                               const parallel::Communicator& comm) {
   const auto& kpts = geo.grid.points();
   const int nk = static_cast<int>(kpts.size());
   const double n = geo.layout.total;
-  for (const auto& kp : kpts) bytes += n * n * (kp.realPhases ? 8.0 : 16.0);
+  const std::vector<int> owner = kpointOwners(geo.grid, comm);
+  for (int k = 0; k < nk; ++k)
+    if (owner[k] == comm.rank()) bytes += n * n * (kpts[k].realPhases ? 8.0 : 16.0);
   kept = bytes <= byteBudget;
   if (!kept) return;
   complex.resize(nk);
   real.resize(nk);
   ready.assign(nk, 0);
   for (int k = 0; k < nk; ++k) {
+    if (owner[k] != comm.rank()) continue;
     if (kpts[k].realPhases) real[k].resize(geo.layout.total, geo.layout.total);
     else complex[k].resize(geo.layout.total, geo.layout.total);
   }
@@ -79,7 +93,8 @@ OverlapFactors::OverlapFactors(const BandGeometry& geo, double byteBudget) {
 BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geo, const std::vector<OrbitalBlock>& h,
                         const Eigen::VectorXd& onsiteShift, double kT, bool density,
-                        EigenvectorPath requestedPath, OverlapFactors* factors) {
+                        EigenvectorPath requestedPath, OverlapFactors* factors,
+                        const parallel::Communicator& comm) {
   using Mode = GeneralizedEigensolver::Mode;
   const auto& kpts = geo.grid.points();
   const int nk = static_cast<int>(kpts.size());
@@ -96,14 +111,22 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
     sol.weights[k] = kpts[k].weight;
     anyReal = anyReal || kpts[k].realPhases;
   }
+  // The k-points of this rank, ascending.
+  const std::vector<int> owner = kpointOwners(geo.grid, comm);
+  std::vector<int> mine;
+  for (int k = 0; k < nk; ++k)
+    if (owner[k] == comm.rank()) mine.push_back(k);
+  const int nMine = static_cast<int>(mine.size());
   // With density, every k-point keeps its eigenvectors (AllVectors) or its tridiagonal form
   // (OccupiedOnly) until the Fermi level is known; without, LAPACK is asked for eigenvalues
   // alone and nothing is kept.
   std::vector<ReducedProblem<std::complex<double>>> keptComplex(density ? nk : 0);
   std::vector<ReducedProblem<double>> keptReal(density ? nk : 0);
-  for (int k = 0; k < nk && density; ++k)
-    kpts[k].realPhases ? keptReal[k].resize(n) : keptComplex[k].resize(n);
-  const int nThreads = std::max(1, std::min(omp_get_max_threads(), nk));
+  for (int k : mine)
+    if (density) kpts[k].realPhases ? keptReal[k].resize(n) : keptComplex[k].resize(n);
+  const int nThreads = std::max(1, std::min(omp_get_max_threads(), std::max(1, nMine)));
+  const std::size_t blockSize = OrbitalBlock::SizeAtCompileTime;
+  const std::size_t nPairs = geo.images.pairs().size();
   std::vector<ThreadWork> work(nThreads);
   for (auto& w : work) {
     w.sk.resize(n, n);
@@ -123,6 +146,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       w.p.assign(geo.images.pairs().size(), OrbitalBlock::Zero());
       w.w.assign(geo.images.pairs().size(), OrbitalBlock::Zero());
       w.onsite = Eigen::VectorXd::Zero(n);
+      w.sum.resize(2 * nPairs * blockSize + n);
     }
   }
   const auto t1 = Clock::now();
@@ -132,7 +156,8 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   {
     BlasThreadsOff blasOff;
 #pragma omp parallel for num_threads(nThreads) schedule(dynamic)
-    for (int k = 0; k < nk; ++k) {
+    for (int i = 0; i < nMine; ++i) {
+      const int k = mine[i];
       ThreadWork& w = work[omp_get_thread_num()];
       const HelicalKPoint& kp = kpts[k];
       try {
@@ -167,7 +192,22 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       }
     }
   }
+  failure = comm.firstFailure(failure);
   if (!failure.empty()) throw NumericalError(failure);
+  if (comm.size() > 1) {
+    // Every rank's levels, in rank order and within a rank by ascending k.
+    std::vector<double> levels;
+    levels.reserve(static_cast<std::size_t>(nMine) * n);
+    for (int k : mine) levels.insert(levels.end(), sol.levels[k].data(), sol.levels[k].data() + n);
+    const std::vector<double> all = comm.allgather(levels);
+    std::size_t at = 0;
+    for (int r = 0; r < comm.size(); ++r)
+      for (int k = 0; k < nk; ++k)
+        if (owner[k] == r) {
+          sol.levels[k] = Eigen::Map<const Eigen::VectorXd>(all.data() + at, n);
+          at += n;
+        }
+  }
   const auto t2 = Clock::now();
   sol.filling = fillFermiDirac(sol.levels, sol.weights, geo.electrons, kT);
   const auto t3 = Clock::now();
@@ -189,7 +229,8 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   {
     BlasThreadsOff blasOff;
 #pragma omp parallel for num_threads(nThreads) schedule(dynamic)
-    for (int k = 0; k < nk; ++k) {
+    for (int i = 0; i < nMine; ++i) {
+      const int k = mine[i];
       ThreadWork& w = work[omp_get_thread_num()];
       try {
         const Eigen::VectorXd& f = sol.filling.occupations[k];
@@ -209,9 +250,19 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
         }
         const auto b = Clock::now();
         w.y.leftCols(m).noalias() = w.x.leftCols(m) * e.head(m).asDiagonal();
+        // This k-point's contribution alone, then into the thread's exact sum.
+        for (std::size_t p = 0; p < nPairs; ++p) {
+          w.p[p].setZero();
+          w.w[p].setZero();
+        }
         accumulateDensityBlocks(geo.layout, geo.images, geo.grid, kpts[k], sol.weights[k],
                                 w.x.leftCols(m), w.y.leftCols(m), w.p, w.w);
-        w.onsite += sol.weights[k] * w.x.leftCols(m).rowwise().squaredNorm();
+        w.onsite.noalias() = sol.weights[k] * w.x.leftCols(m).rowwise().squaredNorm();
+        for (std::size_t p = 0; p < nPairs; ++p) {
+          w.sum.add(p * blockSize, w.p[p].data(), blockSize);
+          w.sum.add((nPairs + p) * blockSize, w.w[p].data(), blockSize);
+        }
+        w.sum.add(2 * nPairs * blockSize, w.onsite.data(), n);
         w.tVectors += seconds(a, b);
         w.tDensity += seconds(b, Clock::now());
       } catch (const std::exception& e) {
@@ -221,13 +272,27 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       }
     }
   }
+  failure = comm.firstFailure(failure);
   if (!failure.empty()) throw NumericalError(failure);
-  for (int t = 1; t < nThreads; ++t) {
-    for (size_t p = 0; p < work[0].p.size(); ++p) {
-      work[0].p[p] += work[t].p[p];
-      work[0].w[p] += work[t].w[p];
+  // Threads, then ranks: integer sums, the same bits in any grouping.
+  parallel::ExactSum& total = work[0].sum;
+  for (int t = 1; t < nThreads; ++t) total.add(work[t].sum);
+  comm.sumInPlace(total.limbs());
+  for (std::size_t p = 0; p < nPairs; ++p) {
+    for (std::size_t e = 0; e < blockSize; ++e) {
+      work[0].p[p].data()[e] = total.value(p * blockSize + e);
+      work[0].w[p].data()[e] = total.value((nPairs + p) * blockSize + e);
     }
-    work[0].onsite += work[t].onsite;
+  }
+  for (int e = 0; e < n; ++e) work[0].onsite[e] = total.value(2 * nPairs * blockSize + e);
+  if (comm.size() > 1) {
+    std::vector<double> used;
+    for (int k : mine) used.push_back(sol.statesUsed[k]);
+    const std::vector<double> all = comm.allgather(used);
+    std::size_t at = 0;
+    for (int r = 0; r < comm.size(); ++r)
+      for (int k = 0; k < nk; ++k)
+        if (owner[k] == r) sol.statesUsed[k] = static_cast<int>(all[at++]);
   }
   double tV = 0, tD = 0;
   for (const auto& w : work) {

@@ -5,6 +5,13 @@
 // image pairs plus the on-site diagonal of the density (for Mulliken populations).
 // Shared by the non-SCC band term (one solve) and the SCC term (one solve per iteration, with
 // the charge-dependent shift added to the blocks and the on-site energies).
+//
+// Over MPI ranks (parallel/communicator.hpp): every rank assembles and solves the k-points it
+// owns (parallel/work_split.hpp, a complex-phase point costed as four real ones), the
+// eigenvalues are gathered so that every rank fills the same levels with the same Fermi level,
+// and the density blocks are summed exactly (parallel/exact_sum.hpp): the results are the same
+// bits for any number of ranks and threads. A failure at a k-point on any rank is the same
+// NumericalError on every rank.
 #include <vector>
 
 #include <Eigen/Dense>
@@ -13,6 +20,7 @@
 #include "dftb/fermi.hpp"
 #include "dftb/parameters.hpp"
 #include "objective/core/images.hpp"
+#include "parallel/communicator.hpp"
 #include "objective/core/kgrid.hpp"
 
 namespace mesochain::dftb {
@@ -34,10 +42,12 @@ struct BandGeometry {
 // not depend on the charges, so the SCC iterations skip potrf. Kept only when they fit in
 // `byteBudget` (n^2 scalars per k-point; a large ring with thousands of angular points would
 // not), otherwise `kept` is false and every solve factors S itself. Storage is allocated here,
-// never in the k loop.
+// never in the k loop, and only for the k-points this rank of `comm` owns (the same split as
+// solveBands with that communicator).
 struct OverlapFactors {
   explicit OverlapFactors(const BandGeometry& geometry,
-                          double byteBudget = 1024.0 * 1024.0 * 1024.0);
+                          double byteBudget = 1024.0 * 1024.0 * 1024.0,
+                          const parallel::Communicator& comm = parallel::Communicator::serial());
   bool kept = false;
   double bytes = 0;
   std::vector<ComplexMatrix> complex;  // per k-point with complex phases
@@ -64,11 +74,17 @@ struct BandSolution {
 // h: the real-space H blocks per image pair (H0, or H0 plus an SCC shift); onsiteShift: empty,
 // or one energy per cell atom added to its on-site diagonal (Hartree). kT > 0 (Hartree).
 // path: how the eigenvectors are computed (the results agree to rounding; see eigensolver.hpp);
-// factors: Cholesky factors of S(k) kept across solves of this geometry (or none).
+// factors: Cholesky factors of S(k) kept across solves of this geometry (or none); comm: the
+// ranks that share the k-points (collective over them; every rank gets the whole solution).
 BandSolution solveBands(const objective::ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geometry, const std::vector<OrbitalBlock>& h,
                         const Eigen::VectorXd& onsiteShift, double kT, bool density,
                         EigenvectorPath path = EigenvectorPath::Automatic,
-                        OverlapFactors* factors = nullptr);
+                        OverlapFactors* factors = nullptr,
+                        const parallel::Communicator& comm = parallel::Communicator::serial());
+
+// The rank of `comm` that solves each k-point of `grid` (the same on every rank).
+std::vector<int> kpointOwners(const objective::HelicalKGrid& grid,
+                              const parallel::Communicator& comm);
 
 }  // namespace mesochain::dftb

@@ -19,8 +19,8 @@ using objective::ObjectiveCell;
 using Clock = std::chrono::steady_clock;
 
 BandStructureTerm::BandStructureTerm(std::shared_ptr<const ParameterSet> params,
-                                     BandSettings settings)
-    : params_(std::move(params)), settings_(settings) {
+                                     BandSettings settings, parallel::Communicator comm)
+    : params_(std::move(params)), settings_(settings), comm_(std::move(comm)) {
   validate(settings_);
 }
 
@@ -90,7 +90,7 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   const bool wantDensity = request.gradient || request.strain;
   const BandSolution sol = solveBands(cell, params, geo, geo.h0, Eigen::VectorXd(),
                                       settings_.electronicTemperature, wantDensity,
-                                      settings_.eigenvectors);
+                                      settings_.eigenvectors, nullptr, comm_);
   reportBandSolution(geo, sol, settings_.electronicTemperature, out);
   out.extras["time_setup"] = std::chrono::duration<double>(t1 - t0).count();
   out.extras["time_filling"] = sol.timeFilling;
@@ -115,9 +115,9 @@ MESOCHAIN_DFTB_TERM(TermRegistration{
     false, [](const CalculatorSettings&) { return true; },
     [](const TermBuild& b) -> std::unique_ptr<EnergyTerm> {
       if (b.chargeInteractions.empty())
-        return std::make_unique<BandStructureTerm>(b.params, b.settings.band);
+        return std::make_unique<BandStructureTerm>(b.params, b.settings.band, b.comm);
       return std::make_unique<SccBandStructureTerm>(b.params, b.settings.band, b.settings.scc,
-                                                    b.chargeInteractions, b.chargeCache);
+                                                    b.chargeInteractions, b.chargeCache, b.comm);
     },
     nullptr})
 

@@ -14,6 +14,7 @@
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
 #include "objective/core/kgrid.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::dftb {
 
@@ -32,7 +33,9 @@ void validate(const BandSettings& settings);
 
 class BandStructureTerm : public EnergyTerm {
  public:
-  BandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings settings);
+  // comm: the ranks that share the k-points of every evaluation (dftb/band_solver.hpp).
+  BandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings settings,
+                    parallel::Communicator comm = parallel::Communicator::serial());
   std::string name() const override { return "band"; }
   void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
                 TermOutput& out) const override;
@@ -41,6 +44,7 @@ class BandStructureTerm : public EnergyTerm {
  private:
   std::shared_ptr<const ParameterSet> params_;
   BandSettings settings_;
+  parallel::Communicator comm_;
 };
 
 struct BandGeometry;

@@ -13,10 +13,11 @@
 
 namespace mesochain::dftb {
 
-Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings)
-    : params_(std::move(params)), settings_(settings) {
+Calculator::Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings,
+                       parallel::Communicator comm)
+    : params_(std::move(params)), settings_(settings), comm_(std::move(comm)) {
   // Charge interactions first: the band term's factory decides on SCC by whether there are any.
-  TermBuild build{params_, settings_, chargeCache_, {}};
+  TermBuild build{params_, settings_, chargeCache_, {}, comm_};
   for (const TermRegistration* t : registeredTerms())
     if (t->needsCharges && t->wanted(settings_)) {
       build.chargeInteractions.push_back(t->makeInteraction(build));

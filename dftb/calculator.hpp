@@ -20,6 +20,7 @@
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
 #include "dftb/scc_term.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::dftb {
 
@@ -50,10 +51,15 @@ struct Result {
 
 class Calculator {
  public:
-  Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings);
+  // comm: the ranks that share every evaluation (the k-points and angular points of the band
+  // term; dftb/band_solver.hpp); evaluate() is then collective over them and returns the same
+  // result on every rank. The default, all ranks of the run, is one rank without MPI.
+  Calculator(std::shared_ptr<const ParameterSet> params, CalculatorSettings settings,
+             parallel::Communicator comm = parallel::Communicator::world());
   Result evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request) const;
   const CalculatorSettings& settings() const { return settings_; }
   const ParameterSet& parameters() const { return *params_; }
+  const parallel::Communicator& communicator() const { return comm_; }
   // The registrations built (energy terms and charge interactions), in registration order.
   const std::vector<std::string>& termNames() const { return names_; }
   // Converged SCC charges kept between evaluations for the warm start (SccSettings::warmStart);
@@ -63,6 +69,7 @@ class Calculator {
  private:
   std::shared_ptr<const ParameterSet> params_;
   CalculatorSettings settings_;
+  parallel::Communicator comm_;
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
   std::vector<std::string> names_;
   std::shared_ptr<ChargeCache> chargeCache_ = std::make_shared<ChargeCache>();

@@ -12,6 +12,12 @@ std::optional<Eigen::VectorXd> ChargeCache::lookup(const std::vector<int>& speci
   return dq_;
 }
 
+std::optional<Eigen::VectorXd> ChargeCache::stored(const std::vector<int>& species) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (dq_.size() == 0 || species != species_) return std::nullopt;
+  return dq_;
+}
+
 void ChargeCache::store(const std::vector<int>& species, const Eigen::VectorXd& dq) {
   std::lock_guard<std::mutex> lock(mutex_);
   species_ = species;

@@ -17,6 +17,8 @@ class ChargeCache {
  public:
   // The stored dq if `species` (per atom) equals that of the stored charges, else nothing.
   std::optional<Eigen::VectorXd> lookup(const std::vector<int>& species) const;
+  // The same, without counting a hit or a miss (a driver passing charges on).
+  std::optional<Eigen::VectorXd> stored(const std::vector<int>& species) const;
   void store(const std::vector<int>& species, const Eigen::VectorXd& dq);
   void clear();
   // Evaluations that found (hits) or did not find (misses) matching charges, and the SCC

@@ -61,12 +61,13 @@ void validate(const SccSettings& scc) {
 SccBandStructureTerm::SccBandStructureTerm(
     std::shared_ptr<const ParameterSet> params, BandSettings band, SccSettings scc,
     std::vector<std::shared_ptr<const ChargeInteraction>> interactions,
-    std::shared_ptr<ChargeCache> cache)
+    std::shared_ptr<ChargeCache> cache, parallel::Communicator comm)
     : params_(std::move(params)),
       band_(band),
       scc_(std::move(scc)),
       interactions_(std::move(interactions)),
-      cache_(std::move(cache)) {
+      cache_(std::move(cache)),
+      comm_(std::move(comm)) {
   validate(band_);
   validate(scc_);
   if (interactions_.empty())
@@ -102,7 +103,7 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     }
   std::vector<OrbitalBlock> h(pairs.size());
   // S(k) is the same in every iteration: its Cholesky factors are computed once.
-  OverlapFactors overlapFactors(geo);
+  OverlapFactors overlapFactors(geo, 1024.0 * 1024.0 * 1024.0, comm_);
   std::vector<double> energies, residuals;
   BandSolution sol;
   double energy = 0, h0Energy = 0, sccEnergy = 0, timeIterations = 0;
@@ -115,7 +116,8 @@ void SccBandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationR
     v = gamma * dqIn;
     for (size_t p = 0; p < pairs.size(); ++p)
       h[p] = geo.h0[p] + (0.5 * (v[pairs[p].i] + v[pairs[p].j])) * geo.s[p];
-    sol = solveBands(cell, params, geo, h, v, kT, true, band_.eigenvectors, &overlapFactors);
+    sol = solveBands(cell, params, geo, h, v, kT, true, band_.eigenvectors, &overlapFactors,
+                     comm_);
     const Eigen::VectorXd q = mullikenPopulations(geo.layout, geo.images, sol.onsiteDensity,
                                                   sol.p, geo.s);
     dqOut = q - q0;

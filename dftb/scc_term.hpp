@@ -38,6 +38,7 @@
 #include "dftb/charge_interaction.hpp"
 #include "dftb/energy_term.hpp"
 #include "dftb/parameters.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::dftb {
 
@@ -65,7 +66,8 @@ class SccBandStructureTerm : public EnergyTerm {
   SccBandStructureTerm(std::shared_ptr<const ParameterSet> params, BandSettings band,
                        SccSettings scc,
                        std::vector<std::shared_ptr<const ChargeInteraction>> interactions,
-                       std::shared_ptr<ChargeCache> cache = nullptr);
+                       std::shared_ptr<ChargeCache> cache = nullptr,
+                       parallel::Communicator comm = parallel::Communicator::serial());
   std::string name() const override { return "band"; }
   void evaluate(const objective::ObjectiveCell& cell, const EvaluationRequest& request,
                 TermOutput& out) const override;
@@ -79,6 +81,7 @@ class SccBandStructureTerm : public EnergyTerm {
   SccSettings scc_;
   std::vector<std::shared_ptr<const ChargeInteraction>> interactions_;
   std::shared_ptr<ChargeCache> cache_;
+  parallel::Communicator comm_;  // the ranks that share the k-points (dftb/band_solver.hpp)
 };
 
 }  // namespace mesochain::dftb

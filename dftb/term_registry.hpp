@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "dftb/energy_term.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::dftb {
 
@@ -39,6 +40,8 @@ struct TermBuild {
   std::shared_ptr<ChargeCache> chargeCache;
   // The charge interactions the settings want (empty: no SCC).
   std::vector<std::shared_ptr<const ChargeInteraction>> chargeInteractions;
+  // The ranks that share the work of one evaluation (the band term's k-points).
+  parallel::Communicator comm = parallel::Communicator::serial();
 };
 
 struct TermRegistration {

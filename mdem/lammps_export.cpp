@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/units.hpp"
@@ -23,8 +24,9 @@
 namespace mesochain::mdem {
 
 namespace {
+// Under mpirun the ranks other than 0 write to /dev/null (common/atomic_file.hpp).
 std::ofstream openOut(const std::string& path) {
-  std::ofstream f(path);
+  std::ofstream f(fileOutputEnabled() ? path : "/dev/null");
   if (!f) throw std::runtime_error("cannot write " + path);
   return f;
 }

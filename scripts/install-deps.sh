@@ -10,6 +10,7 @@ packages=(
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libpng-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-ase
+  libopenmpi-dev openmpi-bin  # MPI over k-points and scan points (docs/cluster.md)
 )
 test_packages=(libfftw3-dev libgtest-dev)  # tests only (scripts/test.sh)
 [ "${1:-}" = "--program-only" ] || packages+=("${test_packages[@]}")

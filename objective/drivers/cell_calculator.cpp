@@ -1,5 +1,7 @@
 #include "objective/drivers/cell_calculator.hpp"
 
+#include <utility>
+
 namespace mesochain::objective {
 
 std::shared_ptr<const dftb::ParameterSet> loadParameters(const CellInput& in) {
@@ -44,8 +46,8 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
   return s;
 }
 
-dftb::Calculator makeCalculator(const CellInput& in) {
-  return dftb::Calculator(loadParameters(in), calculatorSettings(in));
+dftb::Calculator makeCalculator(const CellInput& in, parallel::Communicator comm) {
+  return dftb::Calculator(loadParameters(in), calculatorSettings(in), std::move(comm));
 }
 
 }  // namespace mesochain::objective

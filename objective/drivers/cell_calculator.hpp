@@ -10,6 +10,8 @@ namespace mesochain::objective {
 
 std::shared_ptr<const dftb::ParameterSet> loadParameters(const CellInput& input);
 dftb::CalculatorSettings calculatorSettings(const CellInput& input);
-dftb::Calculator makeCalculator(const CellInput& input);
+// comm: the ranks that share its evaluations (dftb::Calculator).
+dftb::Calculator makeCalculator(const CellInput& input,
+                                parallel::Communicator comm = parallel::Communicator::world());
 
 }  // namespace mesochain::objective

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -181,6 +182,21 @@ ObjectiveCell startingCell(const ScanSettings& s, const BendSource& b, const Pla
   return c;
 }
 
+// The plan after the reference as chains: each starts from the reference (from == 0) and goes
+// on while the next point starts from the previous one (how makePlan builds it).
+std::vector<std::vector<int>> planChains(const std::vector<PlanEntry>& plan) {
+  std::vector<std::vector<int>> chains;
+  for (int k = 1; k < static_cast<int>(plan.size()); ++k) {
+    if (plan[k].from == 0 || chains.empty()) {
+      chains.push_back({k});
+    } else {
+      if (plan[k].from != k - 1) throw std::logic_error("scan plan: a point not after its neighbour");
+      chains.back().push_back(k);
+    }
+  }
+  return chains;
+}
+
 }  // namespace
 
 namespace {
@@ -330,7 +346,8 @@ namespace {
 }  // namespace
 
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
-                   const dftb::CalculatorSettings& calcSettings, const ScanSettings& s) {
+                   const dftb::CalculatorSettings& calcSettings, const ScanSettings& s,
+                   const parallel::Communicator& comm) {
   if (s.kind == ScanKind::Bend && std::abs(cell.symmetry.twist()) > 1e-12)
     throw InputError(kSource, "the cell of a bend scan",
                      fmt::format("rotation order {}, twist {:.6g} rad",
@@ -355,11 +372,18 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   }
   std::vector<PlanEntry> plan = makePlan(s, cell.symmetry.translation(), bendSource);
 
-  const dftb::Calculator straightCalc(params, calcSettings);
   dftb::CalculatorSettings ringSettings = calcSettings;
   ringSettings.band.helicalKPoints = 1;
   ringSettings.band.angular = s.ringAngular;
-  const dftb::Calculator ringCalc(params, ringSettings);
+  // The calculators of straight cells and of rings, on the ranks that share one point.
+  struct Calculators {
+    dftb::Calculator straight, ring;
+  };
+  const auto calculatorsOn = [&](const parallel::Communicator& c) {
+    return std::make_unique<Calculators>(Calculators{dftb::Calculator(params, calcSettings, c),
+                                                     dftb::Calculator(params, ringSettings, c)});
+  };
+  const std::unique_ptr<Calculators> allRanks = calculatorsOn(comm);
 
   ScanCheckpoint checkpoint;
   checkpoint.inputHash = out.inputHash;
@@ -368,6 +392,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   std::error_code ec;
   if (s.resume && !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath, ec)) {
     ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
+    comm.barrier();  // every rank has read it before rank 0 rewrites it below
     if (old.inputHash != out.inputHash)
       refuseCheckpoint(s.checkpointPath, old, out.inputHash, checkpoint.settings,
                        legacyScanInputHashes(cell, calcSettings, s));
@@ -390,10 +415,22 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   }
 
   std::map<int, ScanPoint>& done = checkpoint.completed;
-  auto relaxPoint = [&](const PlanEntry& e, ObjectiveCell start, bool reference,
-                        ProgressBar& bar, int index, int total) {
+  // Converged SCC charges after each point computed here (the warm start of its neighbours).
+  struct Charges {
+    bool ring = false;
+    std::vector<int> species;
+    Eigen::VectorXd dq;
+  };
+  std::map<int, Charges> chargesAfter;
+  auto relaxPoint = [&](const Calculators& calcs, int index, ObjectiveCell start, bool reference,
+                        ProgressBar& bar, int total) {
+    const PlanEntry& e = plan[index];
     const bool ring = start.symmetry.isRing();
-    const dftb::Calculator& calc = ring ? ringCalc : straightCalc;
+    const dftb::Calculator& calc = ring ? calcs.ring : calcs.straight;
+    calc.chargeCache().clear();
+    if (const auto it = chargesAfter.find(e.from); it != chargesAfter.end() && it->second.ring == ring)
+      calc.chargeCache().store(it->second.species, it->second.dq);
+    const std::vector<int> species = start.species;
     RelaxSettings rs = s.relax;
     rs.relaxTranslation = reference && s.relax.relaxTranslation;
     const auto userProgress = s.relax.progress;
@@ -416,6 +453,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
                             scanKindName(s.kind), e.deformation, deformationUnit(s.kind));
       throw InputError(what, err.what());
     }
+    if (const auto dq = calc.chargeCache().stored(species)) chargesAfter[index] = {ring, species, *dq};
     ScanPoint p;
     p.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     p.deformation = e.deformation;
@@ -435,26 +473,36 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     p.cell = std::move(o.cell);
     return p;
   };
+  // The warm-start cell of plan point k (k >= 1) from the relaxed cell of its neighbour.
+  const auto startOf = [&](int k) {
+    const ScanPoint& ref = done.at(0);
+    return startingCell(s, bendSource, plan[k], done.at(plan[k].from), ref,
+                        ref.cell.symmetry.translation(), ref.cell.symmetry.twist());
+  };
 
   ProgressBar bar(fmt::format("scan {}", scanKindName(s.kind)), static_cast<int>(plan.size()));
   if (!s.progressBar) bar.finish();
   bar.skip(static_cast<int>(done.size()));
   int computed = 0;
   const int total = static_cast<int>(plan.size());
+  // Groups of ranks for the chains: with more than one rank, no --stop-after, and at least two
+  // chains with points to compute.
+  const std::vector<std::vector<int>> chains = planChains(plan);
+  std::vector<std::vector<int>> pendingChains;
+  for (const std::vector<int>& c : chains) {
+    std::vector<int> pending;
+    for (int k : c)
+      if (!done.count(k)) pending.push_back(k);
+    if (!pending.empty()) pendingChains.push_back(std::move(pending));
+  }
+  const bool grouped = comm.size() > 1 && s.stopAfter < 0 && pendingChains.size() >= 2;
   for (int k = 0; k < total; ++k) {
+    if (grouped && k == 1) break;  // the chains, below
     if (!done.count(k)) {
       if (s.stopAfter >= 0 && computed >= s.stopAfter) break;
       bar.update(k, fmt::format("point {}/{}", k + 1, total));
-      if (k == 0) {
-        done[0] = relaxPoint(plan[0], cell, true, bar, k, total);
-      } else {
-        const ScanPoint& ref = done.at(0);
-        const ObjectiveCell start =
-            startingCell(s, bendSource, plan[k], done.at(plan[k].from), ref,
-                         ref.cell.symmetry.translation(),
-                         ref.cell.symmetry.twist());
-        done[k] = relaxPoint(plan[k], start, false, bar, k, total);
-      }
+      done[k] = k == 0 ? relaxPoint(*allRanks, 0, cell, true, bar, total)
+                       : relaxPoint(*allRanks, k, startOf(k), false, bar, total);
       ++computed;
       checkpoint.planSize = total;
       if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
@@ -463,6 +511,55 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     if (s.pointDone && done.count(k)) s.pointDone(done.at(k), k, total);
     // Bend curvatures 1/R = 2 pi / (N_a T0) follow T0 of the relaxed reference.
     if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation(), bendSource);
+  }
+  if (grouped) {
+    // Chain c of the pending ones goes to group c mod G; group g holds the ranks
+    // [g size / G, (g + 1) size / G).
+    const int groups = std::min<int>(static_cast<int>(pendingChains.size()), comm.size());
+    const int color = comm.rank() * groups / comm.size();
+    const parallel::Communicator group = comm.split(color);
+    const std::unique_ptr<Calculators> groupCalcs = calculatorsOn(group);
+    std::vector<std::vector<int>> work(groups);
+    for (std::size_t c = 0; c < pendingChains.size(); ++c)
+      for (int k : pendingChains[c]) work[c % groups].push_back(k);
+    std::size_t rounds = 0;
+    for (const auto& w : work) rounds = std::max(rounds, w.size());
+    int reported = 1;  // the reference was reported above
+    for (std::size_t r = 0; r < rounds; ++r) {
+      std::string mine;  // from the group's first rank: "P" point, or "I"/"F" source \n error
+      if (r < work[color].size()) {
+        const int k = work[color][r];
+        try {
+          bar.update(static_cast<int>(done.size()), fmt::format("point {}/{}", k + 1, total));
+          done[k] = relaxPoint(*groupCalcs, k, startOf(k), false, bar, total);
+          if (group.isRoot()) mine = "P" + scanPointText(k, done.at(k));
+        } catch (const InputError& e) {
+          if (group.isRoot()) mine = "I" + e.source() + "\n" + e.what();
+        } catch (const std::exception& e) {
+          if (group.isRoot()) mine = std::string("F\n") + e.what();
+        }
+      }
+      const std::vector<std::string> all = comm.allgatherText(mine);
+      for (const std::string& t : all) {
+        if (t.empty() || t[0] == 'P') continue;
+        const std::size_t nl = t.find('\n');
+        const std::string source = t.substr(1, nl - 1), what = t.substr(nl + 1);
+        if (t[0] == 'F') throw NumericalError(what);
+        const std::string prefix = source + ": ";
+        throw InputError(source, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+      }
+      for (const std::string& t : all) {
+        if (t.empty()) continue;
+        auto [k, p] = scanPointFromText(t.substr(1), cell);
+        if (!done.count(k)) done[k] = std::move(p);  // another group's point
+        ++computed;
+      }
+      checkpoint.planSize = total;
+      if (!s.checkpointPath.empty()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
+      bar.update(static_cast<int>(done.size()));
+      for (; reported < total && done.count(reported); ++reported)
+        if (s.pointDone) s.pointDone(done.at(reported), reported, total);
+    }
   }
   bar.finish();
 

@@ -25,6 +25,19 @@
 // (restoring their relaxed atoms for warm starts), computes the others, keeps the checkpointed
 // points no longer listed aside in the file, and refuses a checkpoint whose input hash (all
 // settings except the deformation list) differs from the current input.
+//
+// The SCC loop of a point starts from the converged charges of the point it is warm-started
+// from (when this run computed that point with the same kind of cell, straight or ring), else
+// from neutral atoms.
+//
+// Over MPI ranks (comm, docs/cluster.md): the reference is computed by all ranks (its k-points
+// split over them); then the chains of the plan (stretch and twist: the points above and below
+// the reference, each warm-started from its neighbour; a sector bend likewise; a ring bend is
+// one chain) go round-robin to groups of ranks, each group splitting the k-points of its points.
+// Points are the same bits as in a serial scan (the same warm starts, exact k sums). The groups
+// exchange their points after every round (one point per group), rank 0 writes the checkpoint
+// and reports the points in the order of the plan. With --stop-after, or a single chain, all
+// ranks work on one point at a time.
 #include <functional>
 #include <map>
 #include <limits>
@@ -36,6 +49,7 @@
 #include "objective/core/cell.hpp"
 #include "objective/core/ring_map.hpp"
 #include "objective/drivers/relax.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mesochain::objective {
 
@@ -111,7 +125,8 @@ struct ScanResult {
 // (duplicate or empty deformation lists, strains <= -1, N_a < 2, a cell that cannot be bent)
 // or a mismatched checkpoint (naming the checkpoint file).
 ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::ParameterSet> params,
-                   const dftb::CalculatorSettings& calculator, const ScanSettings& settings);
+                   const dftb::CalculatorSettings& calculator, const ScanSettings& settings,
+                   const parallel::Communicator& comm = parallel::Communicator::world());
 
 // Every setting that determines a point's result, by name ("calculator.scc.mixing",
 // "scan.relax.force_tolerance", ...; objective/drivers/settings_fields.hpp visits every member of

@@ -46,7 +46,61 @@ json pointJson(int index, const ScanPoint& p) {
   return j;
 }
 
+// One entry of "completed" or "kept_aside" (json exceptions pass to the caller).
+std::pair<int, ScanPoint> readPoint(const json& e, const std::string& path,
+                                    const ObjectiveCell& speciesSource) {
+  const auto bad = [&](const std::string& where, const std::string& found) {
+    throw InputError(path, where, found, "a checkpoint written by mesochain scan (format 1)");
+  };
+  ScanPoint p;
+  const int index = e.at("index").get<int>();
+  p.deformation = e.at("deformation").get<double>();
+  p.rotationOrder = e.at("rotation_order").get<int>();
+  p.energy = e.at("energy_hartree").get<double>();
+  if (e.contains("energies_hartree"))
+    p.energies = e.at("energies_hartree").get<std::map<std::string, double>>();
+  p.converged = e.at("converged").get<bool>();
+  p.maxForce = e.at("max_force_hartree_per_bohr").get<double>();
+  p.timeSeconds = e.at("time_s").get<double>();
+  p.helicalKPoints = e.at("helical_kpoints").get<int>();
+  p.angularPoints = e.at("angular_points").get<int>();
+  p.evaluations = e.at("evaluations").get<int>();
+  const json& mc = e.at("measured_curvature_per_bohr");
+  p.measuredCurvature = mc.is_null() ? std::nan("") : mc.get<double>();
+  const json& cj = e.at("cell");
+  const json& pos = cj.at("positions_bohr");
+  if (static_cast<int>(pos.size()) != speciesSource.atomCount())
+    bad(fmt::format("point {}", index),
+        fmt::format("{} atoms instead of {}", pos.size(), speciesSource.atomCount()));
+  p.cell.speciesNames = speciesSource.speciesNames;
+  p.cell.species = speciesSource.species;
+  p.cell.positions.resize(3, speciesSource.atomCount());
+  for (int a = 0; a < speciesSource.atomCount(); ++a)
+    for (int k = 0; k < 3; ++k) p.cell.positions(k, a) = pos.at(a).at(k).get<double>();
+  p.cell.symmetry = Symmetry::fromParameters(cj.at("translation_bohr").get<double>(),
+                                             cj.at("twist_rad").get<double>(),
+                                             cj.at("symmetry_rotation_order").get<int>(),
+                                             path.c_str());
+  // The restored atoms warm-start other points: checked as a read geometry is.
+  p.cell.validate(fmt::format("{}, completed point with index {}", path, index),
+                  kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
+  return std::make_pair(index, std::move(p));
+}
+
 }  // namespace
+
+std::string scanPointText(int index, const ScanPoint& point) {
+  return pointJson(index, point).dump();
+}
+
+std::pair<int, ScanPoint> scanPointFromText(const std::string& text,
+                                            const ObjectiveCell& speciesSource) {
+  try {
+    return readPoint(json::parse(text), "<scan point>", speciesSource);
+  } catch (const json::exception& e) {
+    throw InputError("<scan point>", std::string("a malformed scan point (") + e.what() + ")");
+  }
+}
 
 ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan) {
   ScanCheckpoint out;
@@ -121,47 +175,12 @@ ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& 
              : kind == "bend"  ? ScanKind::Bend
                                : (bad("key kind", kind), ScanKind::Stretch);
     c.planSize = j.at("plan_size").get<int>();
-    const auto readPoint = [&](const json& e) {
-      ScanPoint p;
-      const int index = e.at("index").get<int>();
-      p.deformation = e.at("deformation").get<double>();
-      p.rotationOrder = e.at("rotation_order").get<int>();
-      p.energy = e.at("energy_hartree").get<double>();
-      if (e.contains("energies_hartree"))
-        p.energies = e.at("energies_hartree").get<std::map<std::string, double>>();
-      p.converged = e.at("converged").get<bool>();
-      p.maxForce = e.at("max_force_hartree_per_bohr").get<double>();
-      p.timeSeconds = e.at("time_s").get<double>();
-      p.helicalKPoints = e.at("helical_kpoints").get<int>();
-      p.angularPoints = e.at("angular_points").get<int>();
-      p.evaluations = e.at("evaluations").get<int>();
-      const json& mc = e.at("measured_curvature_per_bohr");
-      p.measuredCurvature = mc.is_null() ? std::nan("") : mc.get<double>();
-      const json& cj = e.at("cell");
-      const json& pos = cj.at("positions_bohr");
-      if (static_cast<int>(pos.size()) != speciesSource.atomCount())
-        bad(fmt::format("point {}", index),
-            fmt::format("{} atoms instead of {}", pos.size(), speciesSource.atomCount()));
-      p.cell.speciesNames = speciesSource.speciesNames;
-      p.cell.species = speciesSource.species;
-      p.cell.positions.resize(3, speciesSource.atomCount());
-      for (int a = 0; a < speciesSource.atomCount(); ++a)
-        for (int k = 0; k < 3; ++k) p.cell.positions(k, a) = pos.at(a).at(k).get<double>();
-      p.cell.symmetry = Symmetry::fromParameters(cj.at("translation_bohr").get<double>(),
-                                                 cj.at("twist_rad").get<double>(),
-                                                 cj.at("symmetry_rotation_order").get<int>(),
-                                                 path.c_str());
-      // The restored atoms warm-start other points: checked as a read geometry is.
-      p.cell.validate(fmt::format("{}, completed point with index {}", path, index),
-                      kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
-      return std::make_pair(index, std::move(p));
-    };
     for (const json& e : j.at("completed")) {
-      auto [index, p] = readPoint(e);
+      auto [index, p] = readPoint(e, path, speciesSource);
       c.completed[index] = std::move(p);
     }
     if (j.contains("kept_aside"))
-      for (const json& e : j.at("kept_aside")) c.keptAside.push_back(readPoint(e).second);
+      for (const json& e : j.at("kept_aside")) c.keptAside.push_back(readPoint(e, path, speciesSource).second);
   } catch (const json::exception& e) {
     bad("its contents", std::string("a missing or mistyped entry (") + e.what() + ")");
   }

@@ -44,4 +44,10 @@ void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& checkpoi
 // when it cannot be read, is not a scan checkpoint, or its atom count differs.
 ScanCheckpoint readScanCheckpoint(const std::string& path, const ObjectiveCell& speciesSource);
 
+// One point as the JSON text of its checkpoint entry, and back (all digits: the same doubles):
+// how the points of one group of ranks reach the others in a distributed scan.
+std::string scanPointText(int index, const ScanPoint& point);
+std::pair<int, ScanPoint> scanPointFromText(const std::string& text,
+                                            const ObjectiveCell& speciesSource);
+
 }  // namespace mesochain::objective

@@ -131,7 +131,9 @@ void bindCalculation(py::module_& m) {
   py::class_<dftb::Calculator, std::shared_ptr<dftb::Calculator>>(
       m, "Calculator", "The DFTB calculator a cell input asks for (tables, k-points, temperature, dispersion, SCC).")
       .def(py::init([](const objective::CellInput& in) {
-             return std::make_shared<dftb::Calculator>(objective::makeCalculator(in));
+             // One rank, also in a process where something else started MPI (mpi4py).
+             return std::make_shared<dftb::Calculator>(
+                 objective::makeCalculator(in, parallel::Communicator::serial()));
            }),
            py::arg("input"))
       .def("evaluate", &evaluate, py::arg("cell"), py::arg("forces") = true, py::arg("strain") = true,

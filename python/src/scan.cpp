@@ -23,7 +23,8 @@ ScanResult runScanInput(const objective::ScanInput& in, bool resume, int stopAft
   s.progressBar = false;
   py::gil_scoped_release release;
   return objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
-                            objective::calculatorSettings(in.cell), s);
+                            objective::calculatorSettings(in.cell), s,
+                            parallel::Communicator::serial());  // Python: one rank
 }
 
 ScanResult scanCell(const objective::CellInput& in, const std::string& kind, std::vector<double> values,
@@ -62,7 +63,8 @@ ScanResult scanCell(const objective::CellInput& in, const std::string& kind, std
   }
   s.progressBar = false;
   py::gil_scoped_release release;
-  return objective::runScan(in.cell, objective::loadParameters(in), objective::calculatorSettings(in), s);
+  return objective::runScan(in.cell, objective::loadParameters(in), objective::calculatorSettings(in), s,
+                            parallel::Communicator::serial());  // Python: one rank
 }
 
 py::object curveDict(const ScanResult& r) {
