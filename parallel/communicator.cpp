@@ -29,6 +29,18 @@ void check(int rc, const char* what) {
     throw std::runtime_error(std::string("MPI ") + what + ": " + std::string(text, length));
   }
 }
+
+// Every rank's count (counts), where its part starts (offsets) and the total, for Allgatherv.
+int gatherCounts(MPI_Comm comm, int size, int count, std::vector<int>& counts, std::vector<int>& offsets) {
+  counts.assign(size, 0), offsets.assign(size, 0);
+  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm), "Allgather");
+  int total = 0;
+  for (int r = 0; r < size; ++r) {
+    offsets[r] = total;
+    total += counts[r];
+  }
+  return total;
+}
 }  // namespace
 
 bool builtWithMpi() { return true; }
@@ -65,13 +77,8 @@ Communicator Communicator::split(int color) const {
 std::vector<double> Communicator::allgather(const std::vector<double>& mine) const {
   if (!handle_ || size_ == 1) return mine;
   const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(size_), offsets(size_);
-  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, handle_->comm), "Allgather");
-  int total = 0;
-  for (int r = 0; r < size_; ++r) {
-    offsets[r] = total;
-    total += counts[r];
-  }
+  std::vector<int> counts, offsets;
+  const int total = gatherCounts(handle_->comm, size_, count, counts, offsets);
   std::vector<double> all(total);
   check(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
                        MPI_DOUBLE, handle_->comm),
@@ -82,13 +89,8 @@ std::vector<double> Communicator::allgather(const std::vector<double>& mine) con
 std::vector<std::string> Communicator::allgatherText(const std::string& mine) const {
   if (!handle_ || size_ == 1) return {mine};
   const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(size_), offsets(size_);
-  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, handle_->comm), "Allgather");
-  int total = 0;
-  for (int r = 0; r < size_; ++r) {
-    offsets[r] = total;
-    total += counts[r];
-  }
+  std::vector<int> counts, offsets;
+  const int total = gatherCounts(handle_->comm, size_, count, counts, offsets);
   std::string all(static_cast<std::size_t>(total), '\0');
   check(MPI_Allgatherv(mine.data(), count, MPI_CHAR, all.data(), counts.data(), offsets.data(),
                        MPI_CHAR, handle_->comm),

@@ -8,7 +8,20 @@
 #include <sstream>
 #include <string>
 
+#include "common/errors.hpp"
+
 namespace mesochain::testing {
+
+// The message of the InputError `f` throws ("" when it throws nothing).
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 inline std::string hsdTempDir(const std::string& name) {
   const auto d = std::filesystem::temp_directory_path() / ("mesochain-hsd-" + name);

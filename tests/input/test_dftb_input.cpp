@@ -20,16 +20,9 @@ using namespace mesochain;
 using namespace mesochain::input::hsd;
 using mesochain::testing::methaneInput;
 
+using mesochain::testing::errorOf;
+
 namespace {
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // A methane input with `hamiltonianExtra` inside Hamiltonian = DFTB { ... } and `rest` after it.
 std::string methane(const std::string& hamiltonianExtra, const std::string& rest = "",

@@ -6,11 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include "hsd_support.hpp"
+
 #include "common/errors.hpp"
 #include "input/hsd/hsd_tree.hpp"
 
 using namespace mesochain;
 using namespace mesochain::input::hsd;
+
+using mesochain::testing::errorOf;
 
 namespace {
 std::string tempDir(const std::string& name) {
@@ -21,16 +25,6 @@ std::string tempDir(const std::string& name) {
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-// The message of the InputError `f` throws ("" when it throws nothing).
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(HsdTree, NestedBlocksValuesAttributesAndLines) {
