@@ -24,8 +24,6 @@ json constantJson(const LeastSquaresConstant& c) {
           {"error_eV_nm2", c.error * f}, {"points", c.points}};
 }
 
-json finiteOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
-
 }  // namespace
 
 double hartreeBohr2InEvNm2() { return units::kHartreeInEv * nm() * nm(); }

@@ -54,7 +54,9 @@ TEST(CliChain, StagesResumeSkipAndMatchTheHandRunBeam) {
   EXPECT_EQ(status(first, "twist"), "ran");
   EXPECT_EQ(status(first, "bend_soft"), "ran");
   for (const json& s : first["stages"])
-    if (s["stage"] == "stretch") EXPECT_EQ(s["points_restored"].get<int>(), 3);
+    if (s["stage"] == "stretch") {
+      EXPECT_EQ(s["points_restored"].get<int>(), 3);
+    }
   EXPECT_TRUE(fs::exists(dir / "chain-out" / "chain.md"));
   EXPECT_TRUE(fs::exists(dir / "chain-out" / "beam" / "cantilever.toml"));
 

@@ -86,8 +86,9 @@ TEST(CliNetworkLammps, WritesTheNetworkAndAConsistentPairTable) {
   // 0.01 nm of it (10 table steps; elsewhere they agree to 0.2 % of the largest force).
   const double wallJoint = 2 * 0.678 + 0.7 * 0.34, step = r[1] - r[0];
   for (std::size_t k = 1; k + 1 < r.size(); ++k)
-    if (std::abs(r[k] - wallJoint) > 10 * step)
+    if (std::abs(r[k] - wallJoint) > 10 * step) {
       EXPECT_NEAR(f[k], -(u[k + 1] - u[k - 1]) / (r[k + 1] - r[k - 1]), 2e-3 * fmax) << "r = " << r[k];
+    }
   EXPECT_NEAR(u.back(), 0.0, 1e-9);
   std::size_t well = 0;
   for (std::size_t k = 0; k < u.size(); ++k)

@@ -90,7 +90,9 @@ TEST(ProgressLines, VerbosityChoosesTheMode) {
   EXPECT_EQ(lines(out.str()), 3) << out.str();  // -v: every new note, then the step
   setVerbosity(Verbosity::Normal);
   // Off a terminal (as under ctest) plain lines, else the bar.
-  if (!isatty(STDERR_FILENO)) EXPECT_EQ(progressMode(), ProgressMode::Lines);
+  if (!isatty(STDERR_FILENO)) {
+    EXPECT_EQ(progressMode(), ProgressMode::Lines);
+  }
 }
 
 }  // namespace

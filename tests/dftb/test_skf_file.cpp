@@ -239,7 +239,7 @@ TEST(SkfFile, HugeGridCountIsRefusedBeforeAllocating) {
 // Every table shipped with the project (params/) and the test data still loads.
 TEST(SkfFile, EveryShippedTableLoads) {
   int tables = 0;
-  for (const std::string root : {std::string(MESOCHAIN_SOURCE_DIR) + "/params",
+  for (const std::string& root : {std::string(MESOCHAIN_SOURCE_DIR) + "/params",
                                  std::string(MESOCHAIN_TEST_DATA)})
     for (const auto& e : std::filesystem::recursive_directory_iterator(root))
       if (e.path().extension() == ".skf") {
