@@ -39,16 +39,22 @@ objective::CellInput read(const std::string& name, const std::string& text) {
   return readDftbInput(methaneInput(name, text));
 }
 
-// A helical (5,5)-motif input (the geometry of tests/data/dftbplus/cnt55_helical) with `kpoints`.
-objective::CellInput helical(const std::string& name, const std::string& kpoints) {
+// A (5,5) input with the geometry of tests/data/dftbplus/`geometryCase` and `kpoints`, in the
+// temporary folder `name`.
+objective::CellInput cnt55Input(const std::string& name, const std::string& geometryCase, const std::string& kpoints) {
   const std::string d = mesochain::testing::hsdTempDir(name);
-  mesochain::testing::writeText(d + "/geo.gen", mesochain::testing::readText(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/cnt55_helical/geo.gen"));
+  mesochain::testing::writeText(d + "/geo.gen", mesochain::testing::readText(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/" + geometryCase + "/geo.gen"));
   mesochain::testing::writeText(d + "/dftb_in.hsd", mesochain::testing::localPrefix(
       "Geometry = GenFormat { <<< \"geo.gen\" }\nHamiltonian = DFTB {\n  MaxAngularMomentum { C = \"p\" }\n"
       "  Filling = Fermi { Temperature [Kelvin] = 1000 }\n"
       "  SlaterKosterFiles = Type2FileNames { Prefix = \"/work/shared/params/pbc-0-3/\"; Separator = \"-\"; Suffix = \".skf\" }\n"
       "  KPointsAndWeights = " + kpoints + "\n}\n"));
   return readDftbInput(d + "/dftb_in.hsd");
+}
+
+// A helical (5,5)-motif input (the geometry of tests/data/dftbplus/cnt55_helical) with `kpoints`.
+objective::CellInput helical(const std::string& name, const std::string& kpoints) {
+  return cnt55Input(name, "cnt55_helical", kpoints);
 }
 }  // namespace
 
@@ -117,15 +123,9 @@ TEST(DftbInput, HelicalKPointsMapOntoTheMidpointGrid) {
 }
 
 TEST(DftbInput, SupercellFoldingNeedsTheMidpointShift) {
-  const std::string d = mesochain::testing::hsdTempDir("folding");
-  mesochain::testing::writeText(d + "/geo.gen", mesochain::testing::readText(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/cnt55_translational/geo.gen"));
-  auto input = [&](const std::string& folding) {
-    mesochain::testing::writeText(d + "/dftb_in.hsd", mesochain::testing::localPrefix(
-        "Geometry = GenFormat { <<< \"geo.gen\" }\nHamiltonian = DFTB {\n  MaxAngularMomentum { C = \"p\" }\n"
-        "  Filling = Fermi { Temperature [Kelvin] = 1000 }\n"
-        "  SlaterKosterFiles = Type2FileNames { Prefix = \"/work/shared/params/pbc-0-3/\"; Separator = \"-\"; Suffix = \".skf\" }\n"
-        "  KPointsAndWeights = SupercellFolding {\n    1 0 0\n    0 1 0\n    0 0 " + folding + "\n  }\n}\n"));
-    return readDftbInput(d + "/dftb_in.hsd");
+  auto input = [](const std::string& folding) {
+    return cnt55Input("folding", "cnt55_translational",
+                      "SupercellFolding {\n    1 0 0\n    0 1 0\n    0 0 " + folding + "\n  }");
   };
   EXPECT_EQ(input("16\n 0.0 0.0 0.5").helicalKPoints, 16);
   EXPECT_EQ(input("5\n 0.0 0.0 0.0").helicalKPoints, 5);  // odd N: the midpoint grid holds k = 0
