@@ -1,6 +1,6 @@
 // mesochain: from quantum mechanics to a mesoscale model of carbon filaments.
 // One subcommand per driver file (app/cmd_*.cpp); each registers itself in commands.hpp.
-// Global options (before or after the subcommand): --version, -q, -v, --set; exit codes in
+// Global options (before or after the subcommand): --version, -q, -v, --set, --unset; exit codes in
 // app/exit_codes.hpp (docs/command-line.md).
 // Under mpirun (docs/cluster.md) every rank runs the same command: the calculators share their
 // k-points over the ranks, rank 0 alone prints and writes files, and an error ends every rank
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.set_version_flag("--version", versionLine(), "print the version and git commit, then exit");
   bool quiet = false, verbose = false;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, unsets;
   app.add_flag("-q,--quiet", quiet, "no progress output (bars or lines); warnings and errors only");
   app.add_flag("-v,--verbose", verbose,
                "progress as plain lines even on a terminal, with every step (e.g. each relaxation step)");
@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
                  "override a key of the input file (the first TOML file the command reads), typed as "
                  "TOML: --set kpoints.helical=8 --set task.type=energy (repeatable)")
       ->type_name("SECTION.KEY=VALUE");
+  app.add_option("--unset", unsets,
+                 "remove a key or a whole table of the input file before it is read (applied before "
+                 "--set): --unset task --set task.type=energy (repeatable)")
+      ->type_name("SECTION.KEY");
   app.option_defaults()->always_capture_default();  // for every option added from here on
   app.require_subcommand(1);
   std::vector<app::Command> commands = app::allCommands();
@@ -62,13 +66,14 @@ int main(int argc, char** argv) {
   try {
     setVerbosity(quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal);
     std::vector<TomlOverride> overrides;
+    for (const std::string& s : unsets) overrides.push_back(parseTomlRemoval(s));
     for (const std::string& s : sets) overrides.push_back(parseTomlOverride(s));
     setTomlOverrides(std::move(overrides));
     for (auto& c : commands)
       if (c.selected()) {
         const int rc = c.run();
         if (tomlOverridesUnused())
-          std::cerr << "mesochain: warning: --set was not used: this command read no TOML input file\n";
+          std::cerr << "mesochain: warning: --set/--unset were not used: this command read no TOML input file\n";
         return rc;
       }
   } catch (const InputError& e) {

@@ -1,5 +1,6 @@
 #include "common/toml_file.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <sstream>
@@ -51,6 +52,24 @@ toml::value parseTomlFile(const std::string& path, const std::string& kind) {
   return root;
 }
 
+namespace {
+// "section.key" -> {"section", "key"}; InputError naming `option` when it is no dotted bare key.
+std::vector<std::string> parseDottedKey(const std::string& keyText, const std::string& option) {
+  const std::string where = "option " + option;
+  std::vector<std::string> key;
+  std::stringstream keys(keyText);
+  for (std::string k; std::getline(keys, k, '.');) {
+    if (!isBareKey(k))
+      throw InputError("<command line>", where, "the key '" + keyText + "'",
+                       "dotted bare TOML keys (letters, digits, _ and -), e.g. task.type");
+    key.push_back(k);
+  }
+  if (key.empty() || keyText.back() == '.')
+    throw InputError("<command line>", where, "the key '" + keyText + "'", "dotted bare TOML keys, e.g. task.type");
+  return key;
+}
+}  // namespace
+
 TomlOverride parseTomlOverride(const std::string& text) {
   const std::string where = "option --set " + text;
   const auto eq = text.find('=');
@@ -60,16 +79,7 @@ TomlOverride parseTomlOverride(const std::string& text) {
                      "--parameter-set)");
   TomlOverride o;
   o.text = text;
-  std::stringstream keys(text.substr(0, eq));
-  for (std::string k; std::getline(keys, k, '.');) {
-    if (!isBareKey(k))
-      throw InputError("<command line>", where, "the key '" + text.substr(0, eq) + "'",
-                       "dotted bare TOML keys (letters, digits, _ and -), e.g. task.type");
-    o.key.push_back(k);
-  }
-  if (o.key.empty() || text[eq - 1] == '.')
-    throw InputError("<command line>", where, "the key '" + text.substr(0, eq) + "'",
-                     "dotted bare TOML keys, e.g. task.type");
+  o.key = parseDottedKey(text.substr(0, eq), "--set " + text);
   const std::string value = text.substr(eq + 1);
   if (value.empty())
     throw InputError("<command line>", where, "an empty value", "a TOML value (e.g. 8, 1.5, true, \"pbc-0-3\", [1, 2])");
@@ -90,7 +100,19 @@ TomlOverride parseTomlOverride(const std::string& text) {
   return o;
 }
 
+TomlOverride parseTomlRemoval(const std::string& text) {
+  if (text.find('=') != std::string::npos)
+    throw InputError("<command line>", "option --unset " + text, "'" + text + "'",
+                     "a key without a value, e.g. --unset relax (to give a value, use --set)");
+  TomlOverride o;
+  o.text = text;
+  o.key = parseDottedKey(text, "--unset " + text);
+  o.remove = true;
+  return o;
+}
+
 void applyTomlOverride(toml::value& root, const TomlOverride& o, const std::string& source) {
+  const std::string option = (o.remove ? "--unset " : "--set ") + o.text;
   toml::value* t = &root;
   std::string path;
   for (std::size_t i = 0; i + 1 < o.key.size(); ++i) {
@@ -98,19 +120,32 @@ void applyTomlOverride(toml::value& root, const TomlOverride& o, const std::stri
     auto& table = t->as_table();
     auto it = table.find(o.key[i]);
     if (it == table.end()) {
+      if (o.remove)
+        throw InputError(source, "option " + option, "no table " + path + " in the file",
+                         "a key that the file has (--unset removes keys; nothing to remove here)");
       std::istringstream in("v = {}\n");
       it = table.emplace(o.key[i], toml::parse(in, kSetPrefix + o.text).at("v")).first;
     }
     if (!it->second.is_table())
       throw InputError(source, "key " + path + " (" + tomlWhere(it->second) + ")",
-                       "a value that is not a table, so option --set " + o.text + " cannot set a key in it",
-                       "--set keys of tables ([section] key = value)");
+                       "a value that is not a table, so option " + option + " cannot address a key in it",
+                       "keys of tables ([section] key = value)");
     t = &it->second;
   }
-  t->as_table()[o.key.back()] = o.value;
+  auto& table = t->as_table();
+  if (!o.remove) {
+    table[o.key.back()] = o.value;
+    return;
+  }
+  if (table.erase(o.key.back()) == 0)
+    throw InputError(source, "option " + option, "no key " + o.text + " in the file",
+                     "a key that the file has (--unset removes keys; nothing to remove here)");
 }
 
 void setTomlOverrides(std::vector<TomlOverride> o) {
+  // Removals first, each kind in the order given: `--unset relax --set relax.max_steps=10`
+  // replaces the table.
+  std::stable_partition(o.begin(), o.end(), [](const TomlOverride& x) { return x.remove; });
   overrides() = std::move(o);
   overridesApplied() = false;
 }

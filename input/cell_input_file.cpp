@@ -16,11 +16,11 @@ bool isDftbInput(const std::string& path) {
 
 objective::CellInput readCellInputFile(const std::string& path) {
   if (!isDftbInput(path)) return objective::readCellFile(path);
-  // --set overrides keys of TOML files; silently not applying them would be wrong.
+  // --set/--unset override keys of TOML files; silently not applying them would be wrong.
   if (tomlOverridesUnused())
-    throw InputError("<command line>", "option --set", "--set with the DFTB+ input " + path,
-                     "no --set (it overrides keys of TOML inputs): edit the .hsd, or `mesochain convert` it "
-                     "to a cell file and use --set on that");
+    throw InputError("<command line>", "option --set/--unset", "--set or --unset with the DFTB+ input " + path,
+                     "no --set/--unset (they override keys of TOML inputs): edit the .hsd, or `mesochain "
+                     "convert` it to a cell file and use --set/--unset on that");
   return hsd::readDftbInput(path);
 }
 

@@ -34,7 +34,7 @@ bool integral(double x) { return std::abs(x - std::round(x)) < 1e-9; }
 void readScc(const Node& h, CellInput& in) {
   in.scc.enabled = false;
   if (const Node* s = h.child("SCC")) in.scc.enabled = yesNo(*s);
-  for (const char* key : {"SCCTolerance", "MaxSCCIterations"})
+  for (const char* key : {"SCCTolerance", "MaxSCCIterations", "EwaldTolerance", "EwaldParameter"})
     if (const Node* n = h.child(key); n && !in.scc.enabled)
       n->fail(std::string(key) + " with SCC = No", "SCC = Yes, or no SCC keywords");
   if (!in.scc.enabled) return;
@@ -52,6 +52,21 @@ void readScc(const Node& h, CellInput& in) {
     const long k = integer(*n, "1 .. 100000");
     if (k < 1 || k > 100000) n->fail(std::to_string(k), "1 .. 100000");
     in.scc.maxIterations = static_cast<int>(k);
+  }
+  // DFTB+'s EwaldTolerance bounds the terms its 3-D Ewald sum leaves out; mesochain's
+  // [scc] ewald_tolerance bounds the error of its helical Ewald sum of the same 1/r interaction
+  // (docs/ewald.md): the same number, within mesochain's range.
+  if (const Node* t = h.child("EwaldTolerance")) {
+    in.scc.ewaldTolerance = real(*t, "an Ewald tolerance in [1e-13, 1e-2]");
+    if (!(in.scc.ewaldTolerance >= 1e-13 && in.scc.ewaldTolerance <= 1e-2))
+      t->fail(fmt::format("{}", in.scc.ewaldTolerance), "an Ewald tolerance in [1e-13, 1e-2]");
+  }
+  // EwaldParameter only splits DFTB+'s sum between real and reciprocal space (0: DFTB+ chooses);
+  // the converged sum does not depend on it, and mesochain's helical Ewald sum chooses its own
+  // split, so it is checked and has no other effect.
+  if (const Node* a = h.child("EwaldParameter")) {
+    const double alpha = real(*a, "a splitting parameter >= 0 (1/Bohr; 0: automatic)");
+    if (!(alpha >= 0.0)) a->fail(fmt::format("{}", alpha), "a splitting parameter >= 0 (1/Bohr; 0: automatic)");
   }
 }
 
@@ -275,8 +290,8 @@ void readHamiltonian(const Node& root, GenType type, CellInput& in) {
   if (!h) throw InputError(in.source, "the file", "no Hamiltonian", expected);
   const Node& m = method(*h, expected);
   if (!m.is("DFTB")) m.fail("the Hamiltonian '" + m.name + "'", expected);
-  allowOnly(m, {"SCC", "SCCTolerance", "MaxSCCIterations", "MaxAngularMomentum", "SlaterKosterFiles",
-                "KPointsAndWeights", "Filling", "Dispersion"});
+  allowOnly(m, {"SCC", "SCCTolerance", "MaxSCCIterations", "EwaldTolerance", "EwaldParameter", "MaxAngularMomentum",
+                "SlaterKosterFiles", "KPointsAndWeights", "Filling", "Dispersion"});
   readScc(m, in);
   readTables(m, in);
   readAngularMomenta(m, in);

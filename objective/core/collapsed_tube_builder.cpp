@@ -14,21 +14,17 @@ namespace mesochain::objective {
 using units::kBohrInAngstrom;
 using units::kPi;
 
-namespace {
-const char* kSource = "<builder>";
-}
-
 DogBoneContour::DogBoneContour(double halfGap, double bulbRadius, double transitionRadius,
                                double perimeter)
     : h_(halfGap), rb_(bulbRadius), rt_(transitionRadius), perimeter_(perimeter) {
   auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
   if (!positive(h_) || !positive(rt_) || !positive(perimeter_))
-    throw InputError(kSource, "collapsed tube",
+    throw InputError(kBuilderSource, "collapsed tube",
                      fmt::format("half gap {:.4g}, transition radius {:.4g}, perimeter {:.4g} Bohr",
                                  h_, rt_, perimeter_),
                      "positive, finite lengths");
   if (!(rb_ > h_) || !std::isfinite(rb_))
-    throw InputError(kSource, "bulb_radius", fmt::format("{:.4f} Å", rb_ * kBohrInAngstrom),
+    throw InputError(kBuilderSource, "bulb_radius", fmt::format("{:.4f} Å", rb_ * kBohrInAngstrom),
                      fmt::format("a bulb radius larger than half the face separation ({:.4f} Å)",
                                  h_ * kBohrInAngstrom));
   // Tangency of the transition circle (centre (x_t, h + r_t)) and the bulb (centre (x_c, 0)).
@@ -37,7 +33,7 @@ DogBoneContour::DogBoneContour(double halfGap, double bulbRadius, double transit
   alpha_ = theta_ + kPi / 2;
   xt_ = (perimeter_ - 4 * rt_ * alpha_ - 4 * rb_ * (kPi + theta_)) / 4;
   if (!(xt_ >= 0.0))
-    throw InputError(kSource, "collapsed tube",
+    throw InputError(kBuilderSource, "collapsed tube",
                      fmt::format("a wall of perimeter {:.4f} Å, too short for bulbs of radius "
                                  "{:.4f} Å and transitions of radius {:.4f} Å",
                                  perimeter_ * kBohrInAngstrom, rb_ * kBohrInAngstrom,
@@ -76,7 +72,7 @@ Eigen::Vector2d DogBoneContour::point(double s) const {
 ObjectiveCell buildCollapsedTube(const std::vector<std::pair<int, int>>& walls, double bondLength,
                                  const CollapseShape& shape) {
   if (!(shape.interlayer > 0.0) || !std::isfinite(shape.interlayer))
-    throw InputError(kSource, "interlayer", fmt::format("{}", shape.interlayer),
+    throw InputError(kBuilderSource, "interlayer", fmt::format("{}", shape.interlayer),
                      "a positive interlayer distance");
   const ObjectiveCell round = buildMultiWallTranslational(walls, bondLength);
   const int nWalls = static_cast<int>(walls.size());

@@ -19,8 +19,6 @@ using units::kPi;
 
 namespace {
 
-constexpr const char* kSource = "<builder>";
-
 // The lattice data of one primitive direction in integer form. Sheet positions are written
 // in thirds of the lattice vectors, P = (P1, P2): r = (P1 a1 + P2 a2) / 3.
 struct SheetLattice {
@@ -34,11 +32,11 @@ struct SheetLattice {
 
 SheetLattice sheetLattice(ChiralIndices dir) {
   if (dir.n < 1 || dir.m < 0 || dir.m > dir.n)
-    throw InputError(kSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m),
+    throw InputError(kBuilderSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m),
                      "chiral indices 0 <= m <= n, not both 0 (m > n is the mirror image of "
                      "(m, n))");
   if (dir.n > 10000)
-    throw InputError(kSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m), "n <= 10000");
+    throw InputError(kBuilderSource, "chiral", fmt::format("[{}, {}]", dir.n, dir.m), "n <= 10000");
   const long g = std::gcd(dir.n, dir.m);
   SheetLattice l{};
   l.n = dir.n / g;
@@ -96,17 +94,17 @@ GrapheneSheetCell grapheneSheetCell(ChiralIndices dir, double bondLength) {
 
 ObjectiveCell buildGrapheneRingSector(int layers, ChiralIndices dir, int rotationOrder,
                                       int cellsAlongArc, double interlayer, double bondLength) {
-  if (layers < 1) throw InputError(kSource, "layers", std::to_string(layers), "at least one layer");
+  if (layers < 1) throw InputError(kBuilderSource, "layers", std::to_string(layers), "at least one layer");
   if (rotationOrder < 1)
-    throw InputError(kSource, "rotation_order", std::to_string(rotationOrder), "an integer >= 1");
+    throw InputError(kBuilderSource, "rotation_order", std::to_string(rotationOrder), "an integer >= 1");
   if (cellsAlongArc < 1)
-    throw InputError(kSource, "cells_along_arc", std::to_string(cellsAlongArc),
+    throw InputError(kBuilderSource, "cells_along_arc", std::to_string(cellsAlongArc),
                      "at least one cell per sector");
   if (!std::isfinite(bondLength) || !(bondLength > 0.0))
-    throw InputError(kSource, "bond_length", fmt::format("{}", bondLength),
+    throw InputError(kBuilderSource, "bond_length", fmt::format("{}", bondLength),
                      "a positive, finite bond length");
   if (layers > 1 && (!std::isfinite(interlayer) || !(interlayer > 0.0)))
-    throw InputError(kSource, "interlayer", fmt::format("{}", interlayer),
+    throw InputError(kBuilderSource, "interlayer", fmt::format("{}", interlayer),
                      "a positive, finite interlayer distance");
   {
     // Atoms of the sector, counted before any is placed: 4 L / d_R per C x T parallelogram
@@ -115,7 +113,7 @@ ObjectiveCell buildGrapheneRingSector(int layers, ChiralIndices dir, int rotatio
     const long long dr = std::gcd(2LL * dir.n + dir.m, 2LL * dir.m + dir.n);
     const long long atoms = 4 * l / std::max(1LL, dr) * cellsAlongArc * layers;
     if (atoms > kMaxBuiltAtoms)
-      throw InputError(kSource, "layers, chiral and cells_along_arc",
+      throw InputError(kBuilderSource, "layers, chiral and cells_along_arc",
                        fmt::format("{} layers x {} cells of direction ({}, {}): {} atoms", layers,
                                    cellsAlongArc, dir.n, dir.m, atoms),
                        fmt::format("at most {} atoms per cell", kMaxBuiltAtoms));
@@ -126,7 +124,7 @@ ObjectiveCell buildGrapheneRingSector(int layers, ChiralIndices dir, int rotatio
   const double rInner = rMid - 0.5 * (layers - 1) * interlayer;
   if (!(rInner > 0.0))
     throw InputError(
-        kSource, "rotation_order and cells_along_arc",
+        kBuilderSource, "rotation_order and cells_along_arc",
         fmt::format("a middle radius of {:.4f} Å for {} layers {:.4f} Å apart",
                     rMid * units::kBohrInAngstrom, layers, interlayer * units::kBohrInAngstrom),
         "an innermost layer at positive radius (more cells per sector)");

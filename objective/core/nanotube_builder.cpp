@@ -17,8 +17,6 @@ using units::kPi;
 
 namespace {
 
-constexpr const char* kSource = "<builder>";
-
 // Extended Euclid: returns g = gcd(a, b) >= 0 and x, y with a x + b y = g.
 long extendedGcd(long a, long b, long& x, long& y) {
   if (b == 0) {
@@ -41,10 +39,10 @@ double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
 
 NanotubeRollUp::NanotubeRollUp(int n, int m, double bondLength) : n_(n), m_(m), bond_(bondLength) {
   if (n < 1 || m < 0)
-    throw InputError(kSource, "nanotube indices", fmt::format("({}, {})", n, m),
+    throw InputError(kBuilderSource, "nanotube indices", fmt::format("({}, {})", n, m),
                      "integers n >= 1 and m >= 0 (m > n gives the mirror image of (m, n))");
   if (!std::isfinite(bondLength) || !(bondLength > 0.0))
-    throw InputError(kSource, "bond_length", fmt::format("{}", bondLength),
+    throw InputError(kBuilderSource, "bond_length", fmt::format("{}", bondLength),
                      "a positive, finite bond length");
   gcd_ = std::gcd(n, m);
   lengthSquared_ = static_cast<long>(n) * n + static_cast<long>(n) * m + static_cast<long>(m) * m;
@@ -119,7 +117,7 @@ ObjectiveCell buildNanotubeTranslational(int n, int m, double bondLength, bool u
 ObjectiveCell buildNanotubeSector(int n, int m, double bondLength, int order) {
   const NanotubeRollUp tube(n, m, bondLength);
   if (order < 1 || tube.rotationOrder() % order != 0)
-    throw InputError(kSource, fmt::format("rotation order of the ({}, {}) sector", n, m), std::to_string(order),
+    throw InputError(kBuilderSource, fmt::format("rotation order of the ({}, {}) sector", n, m), std::to_string(order),
                      fmt::format("a divisor of gcd(n, m) = {} (the rotation by 2 pi / order maps the wall onto "
                                  "itself only then)",
                                  tube.rotationOrder()));
@@ -130,7 +128,7 @@ ObjectiveCell buildNanotubeSector(int n, int m, double bondLength, int order) {
   // Checked before any atom is placed (a (10000, 9999) cell has 1.2e9 atoms).
   const long atoms = tube.translationalAtomCount() / na;
   if (atoms > kMaxBuiltAtoms)
-    throw InputError(kSource, "nanotube indices",
+    throw InputError(kBuilderSource, "nanotube indices",
                      fmt::format("({}, {}): a translational cell of {} atoms (about {:.3g} GB of "
                                  "positions alone)",
                                  n, m, atoms, 24e-9 * static_cast<double>(atoms)),
@@ -174,10 +172,10 @@ ObjectiveCell buildMultiWallTranslational(const std::vector<std::pair<int, int>>
 ObjectiveCell buildMultiWallSector(const std::vector<std::pair<int, int>>& walls, double bondLength,
                                    int order) {
   if (order < 1)
-    throw InputError(kSource, "rotation order", std::to_string(order),
+    throw InputError(kBuilderSource, "rotation order", std::to_string(order),
                      "an integer >= 1 that divides gcd(n, m) of every wall");
   if (walls.empty())
-    throw InputError(kSource, "walls", "an empty list", "at least one (n, m) wall");
+    throw InputError(kBuilderSource, "walls", "an empty list", "at least one (n, m) wall");
   const NanotubeRollUp first(walls.front().first, walls.front().second, bondLength);
   const double period = first.translationalPeriod();
   std::vector<double> radii;
@@ -186,14 +184,14 @@ ObjectiveCell buildMultiWallSector(const std::vector<std::pair<int, int>>& walls
   long atoms = 0;
   for (const auto& [n, m] : walls) atoms += NanotubeRollUp(n, m, bondLength).translationalAtomCount() / std::max(order, 1);
   if (atoms > kMaxBuiltAtoms)
-    throw InputError(kSource, "walls", fmt::format("{} atoms in one cell", atoms),
+    throw InputError(kBuilderSource, "walls", fmt::format("{} atoms in one cell", atoms),
                      fmt::format("at most {} atoms per cell (fewer or smaller walls, or a higher rotation order)",
                                  kMaxBuiltAtoms));
   for (const auto& [n, m] : walls) {
     const NanotubeRollUp tube(n, m, bondLength);
     if (std::abs(tube.translationalPeriod() - period) > 1e-9 * period)
       throw InputError(
-          kSource, fmt::format("wall ({}, {})", n, m),
+          kBuilderSource, fmt::format("wall ({}, {})", n, m),
           fmt::format("a translational period of {:.6f} Å, incommensurate with {:.6f} Å of "
                       "wall ({}, {})",
                       tube.translationalPeriod() * units::kBohrInAngstrom,
@@ -201,7 +199,7 @@ ObjectiveCell buildMultiWallSector(const std::vector<std::pair<int, int>>& walls
           "walls that share one translational period (e.g. armchair inside armchair)");
     for (double r : radii)
       if (std::abs(r - tube.radius()) < units::kAngstromInBohr)
-        throw InputError(kSource, fmt::format("wall ({}, {})", n, m),
+        throw InputError(kBuilderSource, fmt::format("wall ({}, {})", n, m),
                          fmt::format("a radius of {:.4f} Å, within 1 Å of another wall",
                                      tube.radius() * units::kBohrInAngstrom),
                          "distinct, concentric walls");

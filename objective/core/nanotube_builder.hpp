@@ -27,6 +27,10 @@
 
 namespace mesochain::objective {
 
+// The source the builders' input errors name (their arguments come from a builder table or the
+// command line, not from one file).
+inline constexpr const char* kBuilderSource = "<builder>";
+
 // The roll-up of one (n, m) tube: lattice data and the sheet -> cylinder map.
 class NanotubeRollUp {
  public:

@@ -12,7 +12,7 @@ namespace mesochain::objective {
 using units::kPi;
 
 namespace {
-const char* kSource = "<bend>";
+const char* kBendSource = "<bend>";
 }
 
 BendFrame bendFrame(const ObjectiveCell& straight, BendDirection direction) {
@@ -32,13 +32,13 @@ ObjectiveCell straightToRing(const ObjectiveCell& straight, const BendFrame& fra
                              int rotationOrder) {
   const Symmetry& s = straight.symmetry;
   if (s.isRing() || s.rotationOrder() != 1 || std::abs(s.twist()) > 1e-12)
-    throw InputError(kSource, "the straight cell",
+    throw InputError(kBendSource, "the straight cell",
                      fmt::format("translation {:.6g} Bohr, twist {:.6g} rad, rotation order {}",
                                  s.translation(), s.twist(), s.rotationOrder()),
                      "a translational cell (translation > 0, twist 0, rotation order 1), e.g. "
                      "[builder] cell = \"translational\"");
   if (rotationOrder < 2)
-    throw InputError(kSource, "rotation order", std::to_string(rotationOrder),
+    throw InputError(kBendSource, "rotation order", std::to_string(rotationOrder),
                      "a ring of at least 2 cells");
   const double radius = rotationOrder * s.translation() / (2 * kPi);
   const Eigen::Vector2d er = frame.radial.normalized();
@@ -52,7 +52,7 @@ ObjectiveCell straightToRing(const ObjectiveCell& straight, const BendFrame& fra
     const Eigen::Vector2d d = p.head<2>() - frame.centre;
     const double ur = d.dot(er), ua = d.dot(ea);
     if (!(radius + ur > 1.0))
-      throw InputError(kSource, fmt::format("rotation order {}", rotationOrder),
+      throw InputError(kBendSource, fmt::format("rotation order {}", rotationOrder),
                        fmt::format("a ring radius of {:.4f} Bohr, at which atom {} would sit at "
                                    "{:.4f} Bohr from the ring axis",
                                    radius, a + 1, radius + ur),
@@ -90,7 +90,7 @@ ObjectiveCell rebendSector(const ObjectiveCell& sector, double radiusFrom, doubl
                            int rotationOrderTo) {
   const int nFrom = sector.symmetry.rotationOrder();
   if (rotationOrderTo < 2 || !(radiusTo > 0))
-    throw InputError(kSource, "rotation order", std::to_string(rotationOrderTo),
+    throw InputError(kBendSource, "rotation order", std::to_string(rotationOrderTo),
                      "a ring of at least 2 sectors");
   const double mid = kPi / nFrom;  // angles from the middle of the sector stay continuous
   const double scale = static_cast<double>(nFrom) / rotationOrderTo;
@@ -102,7 +102,7 @@ ObjectiveCell rebendSector(const ObjectiveCell& sector, double radiusFrom, doubl
     const double theta = (mid + rel) * scale;
     const double rho = std::hypot(p.x(), p.y()) - radiusFrom + radiusTo;
     if (!(rho > 1.0))
-      throw InputError(kSource, fmt::format("rotation order {}", rotationOrderTo),
+      throw InputError(kBendSource, fmt::format("rotation order {}", rotationOrderTo),
                        fmt::format("a middle radius of {:.4f} Bohr, at which atom {} would sit "
                                    "{:.4f} Bohr from the axis",
                                    radiusTo, a + 1, rho),

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "common/units.hpp"
+#include "input/cell_input_file.hpp"
 #include "objective/core/cell_document.hpp"
 #include "objective/core/cell_file.hpp"
 #include "objective/core/gen_file.hpp"
@@ -234,7 +235,9 @@ void bindCells(py::module_& m) {
            },
            py::arg("path"), py::arg("energy") = py::none(),
            "Extended XYZ of the cell with its symmetry and settings keys (energy in Hartree).");
-  m.def("read_cell", &objective::readCellFile, py::arg("path"), "Read a cell file (docs/cell-file.md).");
+  m.def("read_cell", &input::readCellInputFile, py::arg("path"),
+        "Read a cell file (docs/cell-file.md) or a DFTB+ input (a path ending in .hsd: the subset of "
+        "docs/cell-file.md, \"DFTB+ input\"), with the reader of `mesochain run`.");
   m.def(
       "cell_input",
       [](const py::dict& document, const std::string& source) {

@@ -1,5 +1,6 @@
 """Cells and cell inputs from files, dicts and arrays: the same reader and the same errors as the
 command line."""
+import json
 import math
 import re
 
@@ -7,7 +8,7 @@ import numpy as np
 import pytest
 
 import mesochain as mc
-from conftest import CELL_DATA, EXAMPLES, cnt55_document, toml_text
+from conftest import CELL_DATA, EXAMPLES, SOURCE_DIR, cnt55_document, toml_text
 
 U = mc.units
 
@@ -147,3 +148,26 @@ def test_document_of_an_input_reads_back_and_edits():
     hot = mc.cell_input(doc)
     assert hot.electronic_temperature == pytest.approx(500 * U.BOLTZMANN_HARTREE_PER_KELVIN, rel=1e-15)
     assert hot.task["type"] == "energy"
+
+
+def test_dftbplus_input_reads_as_the_command_line_runs_it(tmp_path, mesochain_cli):
+    # The same reader as `mesochain run dftb_in.hsd`: HelicalUniform { 40 0.5 } is helical = 80,
+    # the UFF Lennard-Jones dispersion comes along, and the energy is the command line's.
+    hsd = EXAMPLES / "dftbplus-cnt55" / "dftb_in.hsd"
+    inp = mc.read_cell(str(hsd))
+    assert inp.helical_kpoints == 80
+    assert inp.dispersion["model"] == "lj"
+    r = mc.Calculator(inp).evaluate(inp.cell)
+    mesochain_cli("run", hsd, "--json", tmp_path / "out.json")
+    j = json.loads((tmp_path / "out.json").read_text())
+    assert r.free_energy == pytest.approx(j["energies_hartree"]["mermin_free"]["per_cell"], rel=1e-13, abs=0)
+    assert r.dispersion != 0.0
+    # A keyword outside the subset is the command line's error, naming the file and the line.
+    bad = tmp_path / "dftb_in.hsd"
+    text = hsd.read_text().replace("SCC = No", "SCC = No\n  ThirdOrderFull = Yes")
+    bad.write_text(text.replace('"../../params/', '"' + str(SOURCE_DIR / "params") + "/"))
+    (tmp_path / "geo.gen").write_text((hsd.parent / "geo.gen").read_text())
+    with pytest.raises(mc.InputError) as err:
+        mc.read_cell(str(bad))
+    assert err.value.source == str(bad)
+    assert "ThirdOrderFull" in err.value.where and "line" in err.value.where

@@ -149,6 +149,37 @@ TEST_F(CommandLine, SetIsCheckedByTheStrictReader) {
   EXPECT_NE(err.find("not a table"), std::string::npos) << err;
 }
 
+// --unset removes keys before the reader sees the file (and before --set): a relaxation input
+// becomes an energy input, which --set alone cannot do (the relax keys are errors then).
+TEST_F(CommandLine, UnsetRemovesKeysBeforeSet) {
+  std::string relax = cell(8);
+  relax.replace(relax.find("type = \"energy\""), std::string("type = \"energy\"").size(),
+                "type = \"relax\"\nforce_tolerance = 1e-4\nmax_steps = 7");
+  write("relax.toml", relax);
+  std::string out, err;
+  ASSERT_EQ(run("run cell.toml --json energy.json", out, err), 0) << err;
+  EXPECT_EQ(run("run relax.toml --set task.type=energy", out, err), 2);
+  EXPECT_NE(err.find("force_tolerance"), std::string::npos) << err;
+  ASSERT_EQ(run("run relax.toml --json unset.json --set task.type=energy --unset task", out, err), 0) << err;
+  const auto energy = [&](const char* name) {
+    return readJson(dir / name).at("energies_hartree").at("mermin_free").at("per_cell").get<double>();
+  };
+  EXPECT_EQ(energy("unset.json"), energy("energy.json"));
+  EXPECT_NE(err.find("Mermin free energy"), std::string::npos) << err;
+  // One key: the relaxation runs with the default step limit instead of 7 (it converges; no exit 3).
+  ASSERT_EQ(run("run relax.toml --json relaxed.json --unset task.max_steps", out, err), 0) << err;
+  // A key the file does not have, a value given to --unset, a malformed key: errors naming them.
+  EXPECT_EQ(run("run cell.toml --unset task.max_steps", out, err), 2);
+  EXPECT_NE(err.find("--unset task.max_steps"), std::string::npos) << err;
+  EXPECT_NE(err.find("no key task.max_steps"), std::string::npos) << err;
+  EXPECT_EQ(run("run cell.toml --unset nosuch.key", out, err), 2);
+  EXPECT_NE(err.find("no table nosuch"), std::string::npos) << err;
+  EXPECT_EQ(run("run cell.toml --unset task.type=energy", out, err), 2);
+  EXPECT_NE(err.find("a key without a value"), std::string::npos) << err;
+  EXPECT_EQ(run("run cell.toml --unset 'task.'", out, err), 2);
+  EXPECT_NE(err.find("dotted bare TOML keys"), std::string::npos) << err;
+}
+
 TEST_F(CommandLine, DashWritesTheJsonToStandardOutput) {
   std::string out, err;
   ASSERT_EQ(run("run cell.toml --json -", out, err), 0) << err;

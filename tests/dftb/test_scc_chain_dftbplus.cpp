@@ -20,29 +20,18 @@
 
 #include "common/units.hpp"
 #include "scc_support.hpp"
+#include "tests/support/vacuum_extrapolation.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;
 using nlohmann::json;
+using mesochain::testing::fitInverseSquare;
 
 namespace {
 json load(const std::string& path) {
   std::ifstream f(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/" + path);
   EXPECT_TRUE(f.good()) << path;
   return json::parse(f);
-}
-
-// Least-squares c0 + c1 x + c2 x^2 with x = 1/L^2; returns (c0, c1).
-Eigen::Vector3d fitInverseSquare(const std::vector<double>& lengths, const std::vector<double>& y) {
-  const int n = static_cast<int>(lengths.size());
-  Eigen::MatrixXd a(n, 3);
-  Eigen::VectorXd b(n);
-  for (int i = 0; i < n; ++i) {
-    const double x = 1.0 / (lengths[i] * lengths[i]);
-    a.row(i) << 1.0, x, x * x;
-    b[i] = y[i];
-  }
-  return a.colPivHouseholderQr().solve(b);
 }
 }  // namespace
 

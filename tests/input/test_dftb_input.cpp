@@ -75,6 +75,9 @@ TEST(DftbInput, DefaultsAndTaskAreDftbPlus) {
   EXPECT_EQ(scc.scc.chargeTolerance, 1e-5);
   EXPECT_EQ(scc.scc.maxIterations, 100);
   EXPECT_EQ(scc.scc.energyTolerance, 1.0);
+  EXPECT_EQ(scc.scc.ewaldTolerance, objective::SccInput{}.ewaldTolerance);  // mesochain's default
+  const auto ewald = read("scc-ewald", methane("SCC = Yes\n  EwaldTolerance = 1e-12\n  EwaldParameter = 0.3"));
+  EXPECT_EQ(ewald.scc.ewaldTolerance, 1e-12);
   // A relaxation: DFTB+'s defaults, or the given force in its unit.
   const auto lbfgs = read("lbfgs", methane("", "Driver = LBFGS {}\n"));
   EXPECT_EQ(lbfgs.task.type, "relax");
@@ -147,6 +150,14 @@ TEST(DftbInput, KeywordsOutsideTheSubsetAreErrorsWithTheirLine) {
   EXPECT_NE(m.find("Yes or No"), std::string::npos) << m;
   m = errorOf([] { read("scctol", methane("  SCCTolerance = 1e-8")); });
   EXPECT_NE(m.find("with SCC = No"), std::string::npos) << m;
+  m = errorOf([] { read("ewaldtol", methane("  EwaldTolerance = 1e-8")); });
+  EXPECT_NE(m.find("with SCC = No"), std::string::npos) << m;
+  m = errorOf([] { read("ewaldrange", methane("  SCC = Yes\n  EwaldTolerance = 1e-15")); });
+  EXPECT_NE(m.find("line 13"), std::string::npos) << m;
+  EXPECT_NE(m.find("[1e-13, 1e-2]"), std::string::npos) << m;
+  m = errorOf([] { read("ewaldalpha", methane("  SCC = Yes\n  EwaldParameter = -0.3")); });
+  EXPECT_NE(m.find("EwaldParameter"), std::string::npos) << m;
+  EXPECT_NE(m.find(">= 0"), std::string::npos) << m;
   m = errorOf([] { read("mixer", methane("  SCC = Yes\n  Mixer = Broyden { MixingParameter = 0.1 }")); });
   EXPECT_NE(m.find("Mixer"), std::string::npos) << m;
   m = errorOf([] { read("twice", methane("  SCC = Yes\n  SCC = No")); });

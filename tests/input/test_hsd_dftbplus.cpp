@@ -2,10 +2,13 @@
 // mesochain's HSD reader give DFTB+'s numbers: the same geometry in Bohr as DFTB+ used, the
 // same k T, and the energies, Fermi level, charges and forces of reference.json to the
 // tolerances of the side-by-side regressions (tolerances.json, tolerances_scc.json). Then the
-// cell file that `convert` writes from the input gives the same numbers again.
+// cell file that `convert` writes from the input gives the same numbers again. The polar CH
+// chain (ch_chain_1d), which DFTB+ computes in 3-D cells of growing vacuum, gives the
+// vacuum-extrapolated DFTB+ numbers from every one of those inputs.
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -14,6 +17,7 @@
 #include "input/hsd/dftb_input.hpp"
 #include "objective/core/cell_file.hpp"
 #include "objective/drivers/cell_calculator.hpp"
+#include "tests/support/vacuum_extrapolation.hpp"
 
 using namespace mesochain;
 using nlohmann::json;
@@ -122,3 +126,35 @@ TEST(HsdDftbPlus, Cnt55HelicalUniform) {
 TEST(HsdDftbPlus, Cnt55HelicalUniformIdeal) { compareNonScc("cnt55_helical_ideal"); }
 TEST(HsdDftbPlus, SccEthylene) { compareScc("c2h4_scc"); }
 TEST(HsdDftbPlus, SccBenzene) { compareScc("benzene_c6"); }
+
+// ch_chain_1d/L<n>: DFTB+'s 3-D cells with n Å of lateral vacuum and its EwaldTolerance /
+// EwaldParameter keys. mesochain reads each as the 1-D chain (the lateral vectors only set the
+// vacuum), so every L gives the same numbers, and those are DFTB+'s extrapolated to infinite
+// vacuum (c0 of c0 + c1/L^2 + c2/L^4 over the six runs; tolerances_scc_chain.json), not any one
+// run: the largest vacuum is still off by the dipole term c1/L^2 (about 2e-7 Ha at 240 Å).
+TEST(HsdDftbPlus, SccPolarChainInVacuumCells) {
+  const json ref = reference("ch_chain_1d");
+  const json tol = load(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/tolerances_scc_chain.json");
+  std::vector<double> lengths, energies, mesochainEnergies;
+  for (const auto& run : ref["runs"]) {
+    const int angstrom = static_cast<int>(std::lround(run["vacuum_lattice_A"].get<double>()));
+    const std::string name = "ch_chain_1d/L" + std::to_string(angstrom);
+    const objective::CellInput in = input::hsd::readDftbInput(mesochain::testing::copiedDftbPlusCase(name));
+    EXPECT_TRUE(in.scc.enabled) << name;
+    EXPECT_EQ(in.scc.ewaldTolerance, 1e-13) << name;  // EwaldTolerance = 1.0e-13
+    EXPECT_EQ(in.helicalKPoints, ref["kpoints"]["n"].get<int>()) << name;
+    EXPECT_NEAR(in.cell.symmetry.translation(), ref["geometry"]["translation_bohr"].get<double>(), 1e-12);
+    const dftb::Result r = objective::makeCalculator(in).evaluate(in.cell, {false, false});
+    EXPECT_EQ(r.extras.at("scc_converged"), 1.0) << name;
+    lengths.push_back(run["vacuum_lattice_bohr"].get<double>());
+    energies.push_back(run["mermin_energy"].get<double>());
+    mesochainEnergies.push_back(r.freeEnergy);
+  }
+  ASSERT_EQ(lengths.size(), 6u);
+  const double c0 = mesochain::testing::fitInverseSquare(lengths, energies)[0];
+  for (double e : mesochainEnergies) {
+    EXPECT_NEAR(e, mesochainEnergies.front(), 1e-12);  // the vacuum is not part of the 1-D cell
+    EXPECT_NEAR(e, c0, tol["mermin_free_energy"].get<double>());
+  }
+  EXPECT_GT(std::abs(energies.back() - c0), 10 * tol["mermin_free_energy"].get<double>());
+}
