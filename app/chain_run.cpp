@@ -243,9 +243,11 @@ void cantileverStage(ChainRun& r) {
   if (k.contains("K_hartree_per_rad2") && k["K_hartree_per_rad2"].is_object())
     theory.torsionalStiffness = k["K_hartree_per_rad2"]["value"].get<double>() * t0 * toPnNm2;
   theory.tolerance = r.c.cantileverTolerance;
+  theory.massPerLength = r.report["brick"]["mass_ag"].get<double>() / r.report["brick"]["length_nm"].get<double>();
   const std::string hash = chainHash(readText(scenePath) + readText(r.c.dir / "beam" / "model.toml") +
-                                     fmt::format("{:.17g} {:.17g} {:.17g}", theory.bendingStiffness,
-                                                 theory.torsionalStiffness, theory.tolerance));
+                                     fmt::format("{:.17g} {:.17g} {:.17g} {:.17g}", theory.bendingStiffness,
+                                                 theory.torsionalStiffness, theory.tolerance,
+                                                 theory.massPerLength));
   json& rec = r.state["cantilever"];
   json out = {{"stage", "cantilever"}, {"scene", scenePath.string()}};
   if (rec.is_object() && rec.value("input_hash", "") == hash && rec.contains("result")) {
@@ -263,6 +265,8 @@ void cantileverStage(ChainRun& r) {
                 {"residual_moment_pN_nm", c.residualMoment},
                 {"tolerance", c.tolerance},
                 {"passed", c.passed},
+                {"first_bending_frequency_GHz", c.frequency},
+                {"first_bending_frequency_beam_theory_GHz", c.frequencyTheory},
                 {"quantities", json::array()}};
     for (const mdem::CantileverQuantity& q : c.quantities)
       res["quantities"].push_back({{"name", q.name}, {"unit", q.unit}, {"measured", q.measured},

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "mdem/normal_modes.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::mdem {
@@ -55,6 +56,34 @@ CantileverCheck checkCantilever(const Scene& scene, const CantileverTheory& theo
   c.quantities.push_back({"tip bending rotation", "rad", rotation.dot(bendAxis), c.bendingMoment * l / ei});
   if (theory.torsionalStiffness > 0.0 && c.twistingMoment != 0.0)
     c.quantities.push_back({"tip twist", "rad", rotation.dot(d), c.twistingMoment * l / theory.torsionalStiffness});
+  if (theory.massPerLength > 0.0) {
+    // The bending modes in the plane of the deflection: the displacement along it and the
+    // rotation about the bending axis of every element but the clamped one (world axes).
+    int a = 0, r = 0;
+    deflectionDirection.cwiseAbs().maxCoeff(&a);
+    bendAxis.cwiseAbs().maxCoeff(&r);
+    if (std::abs(deflectionDirection[a]) < 1.0 - 1e-9 || std::abs(bendAxis[r]) < 1.0 - 1e-9)
+      bad("a filament or moment not along world axes (no in-plane modes)");
+    std::vector<bool> dofs(6 * scene.bodies.size(), false);
+    for (int i = 0; i < scene.bodies.size(); ++i)
+      if (i != clamp) dofs[6 * i + a] = dofs[6 * i + 3 + r] = true;
+    const double twoPi = 2.0 * 3.14159265358979323846;
+    c.frequency = eigenfrequencies(scene.bodies, scene.bonds, dofs)[0] / twoPi;  // rad/ns -> GHz
+    // The first root bl of the tip-mass cantilever's frequency equation (bisection: it lies
+    // between 0.5 and 1.8751 for tip masses up to 4 mu l).
+    const double tipRatio = 0.5 * scene.bodies.mass[tip] / (theory.massPerLength * l);
+    const auto equation = [tipRatio](double x) {
+      return 1.0 + std::cos(x) * std::cosh(x) +
+             tipRatio * x * (std::cos(x) * std::sinh(x) - std::sin(x) * std::cosh(x));
+    };
+    double lo = 0.5, hi = 1.8751040687119611;
+    for (int k = 0; k < 100; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (equation(lo) * equation(mid) <= 0.0 ? hi : lo) = mid;
+    }
+    const double beta = 0.5 * (lo + hi);
+    c.frequencyTheory = beta * beta / twoPi * std::sqrt(ei / (theory.massPerLength * l * l * l * l));
+  }
   c.tolerance = theory.tolerance;
   c.passed = c.relaxed;
   for (const CantileverQuantity& q : c.quantities)

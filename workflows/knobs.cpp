@@ -83,7 +83,7 @@ void fitInto(KnobRow& row, beam::ScanCurve curve, const std::vector<double>* ene
   }
 }
 
-KnobRow timedKnobRow(const KnobSetting& s, const Evaluation& e) {
+KnobRow timedRow(const KnobSetting& s, const Evaluation& e) {
   KnobRow r;
   r.knob = s.knob;
   r.setting = s.label;
@@ -148,7 +148,7 @@ CurveCost curveCost(const std::string& path) {
   return c;
 }
 
-KnobRow relaxationKnobRow(const std::string& path, const beam::ScanCurve& curve, const KnobsRequest& o) {
+KnobRow relaxationRow(const std::string& path, const beam::ScanCurve& curve, const KnobsRequest& o) {
   const CurveCost cost = curveCost(path);
   KnobRow r;
   r.knob = "relaxation";
