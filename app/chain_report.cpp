@@ -104,7 +104,7 @@ int checkChain(const ChainFile& c) {
   } cleanup{tmp};
   std::cout << fmt::format("chain file {}: valid; cell {}; output folder {}\nstages:\n", c.file.string(), c.cellPath,
                            c.dir.string());
-  std::cout << fmt::format("  reference   relax the straight cell at {:g} Ha/Bohr and find T0 -> reference.json\n",
+  std::cout << fmt::format("  reference   relax the reference cell (straight, or a sector as it is) at {:g} Ha/Bohr with its T0 -> reference.json\n",
                            c.forceTolerance);
   for (const auto& [stage, keys] : c.scans) {
     const fs::path f = tmp / (std::string(stage->name) + ".scan.toml");

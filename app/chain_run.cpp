@@ -100,14 +100,14 @@ bool referenceStage(ChainRun& r) {
     objective::ScanSettings s = in.settings;
     s.progressBar = false;
     ref = objective::relaxScanReference(in.cell.cell, objective::loadParameters(in.cell), calc, s);
-    writeScanReference(refPath.string(), ref);
+    objective::writeScanReference(refPath.string(), ref);
     rec = {{"seconds", secondsSince(t0)}};
     r.saveState();
     if (r.budget > 0) --r.budget;
     out["status"] = "ran";
     if (!ref.point.converged) r.exitCode = 3;
   }
-  out["seconds"] = rec.value("seconds", 0.0);
+  out["seconds"] = rec.is_object() ? rec.value("seconds", 0.0) : 0.0;  // the state may be gone
   const objective::ScanPoint& p = ref.point;
   r.report["reference"] = {{"T0_bohr", p.cell.symmetry.translation()},
                            {"T0_nm", p.cell.symmetry.translation() * units::si::kBohrInNm},
