@@ -59,6 +59,9 @@ struct ChainRun {
   json report;
   int budget = -1;
   int exitCode = 0;  // 3 not converged, 4 stopped
+  // The settings the reference was computed with (cell, calculator, relaxation, the tables'
+  // contents): part of every scan stage's inputs, so that other tables rerun the scans too.
+  std::string referenceIdentity;
 
   void saveState() const { writeFileAtomically(statePath.string(), state.dump(2) + "\n"); }
   void log(const json& stage) {
@@ -81,6 +84,7 @@ bool referenceStage(ChainRun& r) {
   const dftb::CalculatorSettings calc = objective::calculatorSettings(in.cell);
   const auto identity = objective::referenceIdentity(in.cell.cell, calc, in.settings);
   json out = {{"stage", "reference"}, {"outputs", refPath.string()}};
+  r.referenceIdentity = json(identity).dump();
   json& rec = r.state["reference"];
   objective::ScanReference ref;
   bool have = false;
@@ -127,7 +131,7 @@ bool referenceStage(ChainRun& r) {
 bool scanStage(ChainRun& r, const ScanStage& stage, const toml::value& keys, const std::string& cellText,
                beam::BeamInputs& bin) {
   const std::string text = scanFileText(r.c, stage, keys, stage.name, true);
-  const std::string hash = chainHash(text + cellText);
+  const std::string hash = chainHash(text + cellText + r.referenceIdentity);
   const fs::path scanFile = r.c.dir / (std::string(stage.name) + ".scan.toml");
   const fs::path curve = r.c.dir / (std::string(stage.name) + ".json");
   json& rec = r.state[stage.name];
