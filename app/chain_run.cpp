@@ -5,13 +5,15 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <iostream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <toml.hpp>
 
+#include "app/chain_file.hpp"
+#include "app/chain_report.hpp"
 #include "beam/beam_run.hpp"
 #include "beam/fit_plot.hpp"
 #include "beam/mdem_export.hpp"
@@ -19,12 +21,15 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
-#include "common/toml_file.hpp"
-#include "objective/core/cell_file.hpp"
+#include "common/units.hpp"
+#include "mdem/cantilever_check.hpp"
+#include "mdem/scene_file.hpp"
 #include "objective/drivers/cell_calculator.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_file.hpp"
 #include "objective/drivers/scan_output.hpp"
+#include "objective/drivers/scan_reference.hpp"
+#include "workflows/knobs.hpp"
 
 namespace mesochain::app {
 
@@ -33,16 +38,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct ScanStage {
-  const char* name;       // the chain file's table and the stage name
-  const char* kind;       // scan kind
-  const char* direction;  // bend direction, "" otherwise
-};
-constexpr ScanStage kScanStages[] = {{"stretch", "stretch", ""},
-                                     {"twist", "twist", ""},
-                                     {"bend_soft", "bend", "soft"},
-                                     {"bend_hard", "bend", "hard"}};
-
 std::string readText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
@@ -50,199 +45,156 @@ std::string readText(const fs::path& p) {
   return s.str();
 }
 
-// FNV-1a, 64 bit (Fowler, Noll & Vo), of a stage's inputs.
-std::string hashOf(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-  return fmt::format("{:016x}", h);
-}
-
-// A TOML string literal (basic string, escaped).
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-struct Chain {
-  fs::path file, dir;
-  std::string cellPath;  // absolute
-  double forceTolerance = 1e-4;
-  int cellsPerBrick = 0;
-  std::string section;  // "" = automatic
-  std::vector<std::pair<const ScanStage*, toml::value>> scans;
-};
-
-Chain readChain(const std::string& path) {
-  const toml::value root = parseTomlFile(path, "chain file");
-  Chain c;
-  c.file = fs::absolute(path);
-  c.dir = c.file.parent_path() / "chain-out";
-  const std::string where = path;
-  auto line = [](const toml::value& v) { return fmt::format("(line {})", v.location().line()); };
-  bool format = false, cell = false;
-  for (const auto& [key, v] : root.as_table()) {
-    const std::string at = fmt::format("key {} {}", key, line(v));
-    if (key == "format") {
-      if (!v.is_integer() || v.as_integer() != 1) throw InputError(where, at, toml::format(v), "format = 1");
-      format = true;
-    } else if (key == "cell") {
-      if (!v.is_string()) throw InputError(where, at, "not a string", "the path of a cell file (docs/cell-file.md)");
-      c.cellPath = fs::absolute(c.file.parent_path() / v.as_string().str).string();
-      cell = true;
-    } else if (key == "output") {
-      if (!v.is_string() || v.as_string().str.empty()) throw InputError(where, at, "not a path", "a folder for the stages");
-      c.dir = c.file.parent_path() / v.as_string().str;
-    } else if (key == "force_tolerance") {
-      const double x = v.is_floating() ? v.as_floating() : v.is_integer() ? static_cast<double>(v.as_integer()) : -1.0;
-      if (!(x > 0.0) || !std::isfinite(x)) throw InputError(where, at, toml::format(v), "a force tolerance > 0 (Ha/Bohr)");
-      c.forceTolerance = x;
-    } else if (key == "cells_per_brick") {
-      if (!v.is_integer() || v.as_integer() < 1 || v.as_integer() > beam::kMaxCellsPerBrick)
-        throw InputError(where, at, toml::format(v), "an integer >= 1 (cells per brick)");
-      c.cellsPerBrick = static_cast<int>(v.as_integer());
-    } else if (key == "section") {
-      const std::string sec = v.is_string() ? v.as_string().str : "";
-      if (sec != "rectangle" && sec != "circle" && sec != "annulus")
-        throw InputError(where, at, toml::format(v), "\"rectangle\", \"circle\" or \"annulus\"");
-      c.section = sec;
-    } else {
-      bool stage = false;
-      for (const ScanStage& s : kScanStages)
-        if (key == s.name) {
-          if (!v.is_table()) throw InputError(where, at, "not a table", fmt::format("a table [{}] of scan keys", s.name));
-          c.scans.emplace_back(&s, v);
-          stage = true;
-        }
-      if (!stage)
-        throw InputError(where, at, "an unknown key",
-                         "format, cell, output, force_tolerance, cells_per_brick, section, [stretch], [twist], "
-                         "[bend_soft], [bend_hard]");
-    }
-  }
-  if (!format) throw InputError(where, "key format", "nothing", "format = 1");
-  if (!cell) throw InputError(where, "key cell", "nothing", "cell = \"FILE.toml\" (the filament)");
-  if (c.cellsPerBrick == 0) throw InputError(where, "key cells_per_brick", "nothing", "cells_per_brick = N");
-  if (c.scans.empty()) throw InputError(where, "stages", "no scan table", "at least [stretch] (and [twist], [bend_soft])");
-  std::stable_sort(c.scans.begin(), c.scans.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  return c;
-}
-
-// The scan file of a stage: the chain's table keys verbatim, the cell, the kind, the relaxation
-// and the outputs in the chain's folder.
-std::string scanFileText(const Chain& c, const ScanStage& s, const toml::value& keys) {
-  std::string t = fmt::format("# written by `mesochain chain {}`; docs/scan-file.md\nformat = 1\ncell = {}\nkind = \"{}\"\n",
-                              c.file.filename().string(), quoted(c.cellPath), s.kind);
-  if (*s.direction) t += fmt::format("direction = \"{}\"\n", s.direction);
-  std::string dimensions;
-  for (const auto& [k, v] : keys.as_table()) {
-    if (k == "dimensions" && v.is_table()) {  // [STAGE.dimensions] -> the scan's [dimensions]
-      for (const auto& [dk, dv] : v.as_table()) dimensions += dk + " = " + toml::format(dv) + "\n";
-      continue;
-    }
-    if (k == "direction" || k == "kind" || k == "cell" || v.is_table())
-      throw InputError(c.file.string(), fmt::format("key {}.{} (line {})", s.name, k, v.location().line()),
-                       "a key the chain sets itself", "the scan's deformation keys (strains, rotation_orders, ...)");
-    t += k + " = " + toml::format(v) + "\n";
-  }
-  if (!dimensions.empty()) t += "[dimensions]\n" + dimensions;
-  t += fmt::format("[relax]\nforce_tolerance = {:.17g}\n[output]\njson = \"{}.json\"\ncsv = \"{}.csv\"\n"
-                   "checkpoint = \"{}.checkpoint.json\"\n",
-                   c.forceTolerance, s.name, s.name, s.name);
-  return t;
-}
-
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
-
-int runChain(const ChainOptions& o) {
-  const Chain c = readChain(o.file);
-  fs::create_directories(c.dir);
-  const fs::path statePath = c.dir / "chain-state.json";
+// The run of one chain: the file, the state of its stages (chain-state.json: per stage the hash
+// of its inputs, done, the seconds over all runs), the report being built and the budget of
+// new relaxations (--stop-after).
+struct ChainRun {
+  ChainFile c;
+  fs::path statePath;
   json state = json::object();
-  if (fs::exists(statePath)) {
-    state = json::parse(readText(statePath), nullptr, false);
-    if (state.is_discarded() || !state.is_object())
-      throw InputError(statePath.string(), "the chain state", "not a JSON object",
-                       "the file a chain writes (delete it to rerun every stage)");
-  }
-  const std::string cellText = readText(c.cellPath);
-  if (cellText.empty()) throw InputError(c.file.string(), "key cell", c.cellPath, "a readable cell file");
   json report;
-  report["format"] = 1;
-  report["chain_file"] = c.file.string();
-  report["stages"] = json::array();
-  int budget = o.stopAfter;
-  beam::BeamInputs bin;
-  std::string beamHashInput;
-  for (const auto& [stage, keys] : c.scans) {
-    const std::string text = scanFileText(c, *stage, keys);
-    const std::string hash = hashOf(text + cellText);
-    const fs::path scanFile = c.dir / (std::string(stage->name) + ".scan.toml");
-    const fs::path curve = c.dir / (std::string(stage->name) + ".json");
-    json& rec = state[stage->name];
-    json out = {{"stage", stage->name}, {"scan_file", scanFile.string()}, {"curve", curve.string()}};
-    if (rec.is_object() && rec.value("input_hash", "") == hash && rec.value("done", false) && fs::exists(curve)) {
-      out["status"] = "skipped (done, inputs unchanged)";
-      out["seconds"] = rec.value("seconds", 0.0);
-    } else {
-      if (!(rec.is_object() && rec.value("input_hash", "") == hash)) {
-        fs::remove(c.dir / (std::string(stage->name) + ".checkpoint.json"));  // other inputs: start afresh
-        rec = {{"input_hash", hash}, {"done", false}, {"seconds", 0.0}};
-      }
-      writeFileAtomically(scanFile.string(), text);
-      // The scan's [output] paths are relative to the chain's folder (as scan -o DIR).
-      objective::ScanInput in = objective::readScanFile(scanFile.string(), c.dir.string());
-      in.settings.resume = true;
-      in.settings.stopAfter = budget;
-      in.settings.progressBar = false;
-      const auto t0 = std::chrono::steady_clock::now();
-      const objective::ScanResult r = objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
-                                                         objective::calculatorSettings(in.cell), in.settings);
-      rec["seconds"] = rec.value("seconds", 0.0) + secondsSince(t0);
-      out["seconds"] = rec["seconds"];
-      out["points_computed"] = r.computed;
-      out["points_restored"] = r.reused;
-      if (budget >= 0) budget = std::max(0, budget - r.computed);
-      if (!r.complete) {
-        writeFileAtomically(statePath.string(), state.dump(2) + "\n");
-        std::cout << fmt::format("chain: stage {} stopped after {} new point(s); rerun to resume\n", stage->name,
-                                 r.computed);
-        return 4;
-      }
-      objective::writeScanCurve(r, in.jsonPath, in.csvPath);
-      for (const auto& p : r.points)
-        if (!p.converged) {
-          writeFileAtomically(statePath.string(), state.dump(2) + "\n");
-          std::cerr << fmt::format("chain: stage {}: a point did not converge within the step limit\n", stage->name);
-          return 3;
-        }
-      rec["done"] = true;
-      out["status"] = r.reused > 0 ? "resumed" : "ran";
-      writeFileAtomically(statePath.string(), state.dump(2) + "\n");
-    }
-    std::cout << fmt::format("chain: {:<10} {} ({:.1f} s)\n", stage->name, out["status"].get<std::string>(),
-                             out["seconds"].get<double>());
-    report["stages"].push_back(out);
-    bin.curves.push_back(beam::readScanTable(curve.string()));
-    beamHashInput += readText(curve);
-  }
+  int budget = -1;
+  int exitCode = 0;  // 3 not converged, 4 stopped
+  // The settings the reference was computed with (cell, calculator, relaxation, the tables'
+  // contents): part of every scan stage's inputs, so that other tables rerun the scans too.
+  std::string referenceIdentity;
 
-  // beam: the curves -> beam.json, model.toml, cantilever.toml and the fit plots.
+  void saveState() const { writeFileAtomically(statePath.string(), state.dump(2) + "\n"); }
+  void log(const json& stage) {
+    std::cout << fmt::format("chain: {:<10} {} ({:.1f} s)\n", stage["stage"].get<std::string>(),
+                             stage["status"].get<std::string>(), stage["seconds"].get<double>());
+    report["stages"].push_back(stage);
+  }
+};
+
+// reference: the first scan stage's scan file without `reference` (reference.scan.toml, read by
+// the scan reader for the cell, calculator and relaxation), its point 0 relaxed once with the
+// T0 search (relaxScanReference) into reference.json. Skipped when reference.json was computed
+// with the same settings. Returns false when stopped.
+bool referenceStage(ChainRun& r) {
+  const auto& [first, keys] = r.c.scans.front();
+  const fs::path scanFile = r.c.dir / "reference.scan.toml";
+  const fs::path refPath = r.c.dir / "reference.json";
+  writeFileAtomically(scanFile.string(), scanFileText(r.c, *first, keys, "reference", false));
+  const objective::ScanInput in = objective::readScanFile(scanFile.string(), r.c.dir.string());
+  const dftb::CalculatorSettings calc = objective::calculatorSettings(in.cell);
+  const auto identity = objective::referenceIdentity(in.cell.cell, calc, in.settings);
+  json out = {{"stage", "reference"}, {"outputs", refPath.string()}};
+  r.referenceIdentity = json(identity).dump();
+  json& rec = r.state["reference"];
+  objective::ScanReference ref;
+  bool have = false;
+  if (fs::exists(refPath)) {
+    try {
+      ref = objective::readScanReference(refPath.string(), in.cell.cell);
+      have = objective::settingChanges(ref.identity, identity, "reference").empty();
+    } catch (const InputError&) {
+      have = false;  // another cell's reference: relaxed again
+    }
+  }
+  if (have) {
+    out["status"] = "skipped (done, inputs unchanged)";
+  } else {
+    if (r.budget == 0) return false;
+    const auto t0 = std::chrono::steady_clock::now();
+    objective::ScanSettings s = in.settings;
+    s.progressBar = false;
+    ref = objective::relaxScanReference(in.cell.cell, objective::loadParameters(in.cell), calc, s);
+    objective::writeScanReference(refPath.string(), ref);
+    rec = {{"seconds", secondsSince(t0)}};
+    r.saveState();
+    if (r.budget > 0) --r.budget;
+    out["status"] = "ran";
+    if (!ref.point.converged) r.exitCode = 3;
+  }
+  out["seconds"] = rec.is_object() ? rec.value("seconds", 0.0) : 0.0;  // the state may be gone
+  const objective::ScanPoint& p = ref.point;
+  r.report["reference"] = {{"T0_bohr", p.cell.symmetry.translation()},
+                           {"T0_nm", p.cell.symmetry.translation() * units::si::kBohrInNm},
+                           {"twist0_rad", p.cell.symmetry.twist()},
+                           {"rotation_order", p.cell.symmetry.rotationOrder()},
+                           {"atoms_per_cell", p.cell.atomCount()},
+                           {"energy_hartree_per_cell", p.energy},
+                           {"converged", p.converged},
+                           {"max_force_hartree_per_bohr", p.maxForce},
+                           {"file", refPath.string()}};
+  r.log(out);
+  return true;
+}
+
+// A scan stage: STAGE.scan.toml run as `mesochain scan --resume` from the shared reference.
+// Returns false when stopped or not converged (exitCode set).
+bool scanStage(ChainRun& r, const ScanStage& stage, const toml::value& keys, const std::string& cellText,
+               beam::BeamInputs& bin) {
+  const std::string text = scanFileText(r.c, stage, keys, stage.name, true);
+  const std::string hash = chainHash(text + cellText + r.referenceIdentity);
+  const fs::path scanFile = r.c.dir / (std::string(stage.name) + ".scan.toml");
+  const fs::path curve = r.c.dir / (std::string(stage.name) + ".json");
+  json& rec = r.state[stage.name];
+  json out = {{"stage", stage.name}, {"scan_file", scanFile.string()}, {"curve", curve.string()}};
+  if (rec.is_object() && rec.value("input_hash", "") == hash && rec.value("done", false) && fs::exists(curve)) {
+    out["status"] = "skipped (done, inputs unchanged)";
+    out["seconds"] = rec.value("seconds", 0.0);
+  } else {
+    if (!(rec.is_object() && rec.value("input_hash", "") == hash)) {
+      fs::remove(r.c.dir / (std::string(stage.name) + ".checkpoint.json"));  // other inputs: start afresh
+      rec = {{"input_hash", hash}, {"done", false}, {"seconds", 0.0}};
+    }
+    writeFileAtomically(scanFile.string(), text);
+    // The scan's [output] paths are relative to the chain's folder (as scan -o DIR).
+    objective::ScanInput in = objective::readScanFile(scanFile.string(), r.c.dir.string());
+    in.settings.resume = true;
+    in.settings.stopAfter = r.budget;
+    in.settings.progressBar = false;
+    const auto t0 = std::chrono::steady_clock::now();
+    const objective::ScanResult res = objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
+                                                         objective::calculatorSettings(in.cell), in.settings);
+    rec["seconds"] = rec.value("seconds", 0.0) + secondsSince(t0);
+    out["seconds"] = rec["seconds"];
+    out["points_computed"] = res.computed;
+    out["points_restored"] = res.reused;
+    if (r.budget >= 0) r.budget = std::max(0, r.budget - res.computed);
+    if (!res.complete) {
+      r.saveState();
+      std::cout << fmt::format("chain: stage {} stopped after {} new point(s); rerun to resume\n", stage.name,
+                               res.computed);
+      r.exitCode = 4;
+      return false;
+    }
+    objective::writeScanCurve(res, in.jsonPath, in.csvPath);
+    fs::create_directories(fs::path(in.structurePrefix).parent_path());
+    objective::writeScanStructures(res, in.structurePrefix);
+    for (const auto& p : res.points)
+      if (!p.converged) {
+        r.saveState();
+        std::cerr << fmt::format("chain: stage {}: a point did not converge within the step limit\n", stage.name);
+        r.exitCode = 3;
+        return false;
+      }
+    rec["done"] = true;
+    out["status"] = res.reused > 0 ? "resumed" : "ran";
+    r.saveState();
+  }
+  r.log(out);
+  bin.curves.push_back(beam::readScanTable(curve.string()));
+  return true;
+}
+
+// beam: the curves -> beam.json, model.toml, cantilever.toml and the fit plots (rerun every
+// time: well under a second).
+beam::BeamRun beamStage(ChainRun& r, beam::BeamInputs bin) {
   bool hard = false;
-  for (const auto& [stage, keys] : c.scans) hard = hard || std::string(stage->name) == "bend_hard";
-  bin.cellsPerBrick = c.cellsPerBrick;
-  bin.section = !c.section.empty() ? c.section : hard ? "rectangle" : "circle";
-  bin.source = c.file.string();
+  for (const auto& [stage, keys] : r.c.scans) hard = hard || std::string(stage->name) == "bend_hard";
+  bin.cellsPerBrick = r.c.cellsPerBrick;
+  bin.section = !r.c.section.empty() ? r.c.section : hard ? "rectangle" : "circle";
+  bin.source = r.c.file.string();
   const auto t0 = std::chrono::steady_clock::now();
   beam::BeamRun run = beam::runBeam(bin);
-  const fs::path beamDir = c.dir / "beam";
+  const fs::path beamDir = r.c.dir / "beam";
   fs::create_directories(beamDir);
   beam::MdemExportOptions ex;
   const std::string model = beam::mdemModelToml(run.brick, ex, "mDEM model written by `mesochain chain`");
@@ -256,38 +208,178 @@ int runChain(const ChainOptions& o) {
     beam::writeFitPlot(fc, (beamDir / name).string());
   }
   writeFileAtomically((beamDir / "beam.json").string(), run.report.dump(2) + "\n");
-  report["stages"].push_back({{"stage", "beam"}, {"status", "ran"}, {"seconds", secondsSince(t0)},
-                              {"outputs", (beamDir / "beam.json").string()}});
-  report["constants"] = run.report["constants"];
-  report["beam"] = run.report["beam"];
-  report["brick"] = run.report["brick"];
-  if (run.report.contains("warnings")) report["warnings"] = run.report["warnings"];
-  requireFiniteJson(report, (c.dir / "chain.json").string());
-  writeFileAtomically((c.dir / "chain.json").string(), report.dump(2) + "\n");
+  r.log({{"stage", "beam"}, {"status", "ran"}, {"seconds", secondsSince(t0)},
+         {"outputs", (beamDir / "beam.json").string()}});
+  r.report["constants"] = run.report["constants"];
+  r.report["beam"] = run.report["beam"];
+  r.report["brick"] = run.report["brick"];
+  if (run.report.contains("warnings")) r.report["warnings"] = run.report["warnings"];
+  return run;
+}
 
-  std::string md = fmt::format("# Chain report: {}\n\nFilament: `{}`; force tolerance {:g} Ha/Bohr; {} cells per brick.\n\n"
-                               "| stage | status | seconds |\n|---|---|---|\n",
-                               c.file.filename().string(), c.cellPath, c.forceTolerance, c.cellsPerBrick);
-  for (const json& s : report["stages"])
-    md += fmt::format("| {} | {} | {:.1f} |\n", s["stage"].get<std::string>(), s["status"].get<std::string>(),
-                      s["seconds"].get<double>());
-  md += "\n| constant | value | uncertainty | source |\n|---|---|---|---|\n";
-  for (const auto& [key, v] : report["constants"].items())
-    if (v.is_object())
-      md += fmt::format("| {} | {:.8g} | {:.2g} | {} |\n", key, v["value"].get<double>(), v["uncertainty"].get<double>(),
-                        v["source"].get<std::string>());
-  md += fmt::format("\nBeam ({}, {} closure): Y = {:.6g} GPa, G = {:.6g} GPa. Brick: L = {:.6g} nm, mass {:.6g} ag. "
-                    "Files: `beam/beam.json`, `beam/{}`, `beam/cantilever.toml` (run it with `mesochain dem`).\n",
-                    run.beam.shape, run.beam.closure, report["beam"]["young_modulus_GPa"].get<double>(),
-                    report["beam"]["shear_modulus_GPa"].get<double>(), report["brick"]["length_nm"].get<double>(),
-                    report["brick"]["mass_ag"].get<double>(), ex.modelFile);
-  if (report.contains("warnings"))
-    for (const auto& w : report["warnings"]) md += "\nWarning: " + w.get<std::string>() + "\n";
-  writeFileAtomically((c.dir / "chain.md").string(), md);
-  for (const auto& [key, v] : report["constants"].items())
+// beam = false: each curve fitted alone (the fitter of `mesochain beam`, U(0) free where there is
+// no straight point) into report["constants"], no beam, bricks or cantilever.
+void curveFits(ChainRun& r, const beam::BeamInputs& bin) {
+  for (const beam::ScanCurve& curve : bin.curves) {
+    const beam::CurveConstant q = beam::curveConstant(curve);
+    const beam::FittedCurve fc = beam::fitScanCurve(curve, q.name, q.key, bin.tolerance, bin.linearTerm, false);
+    r.report["constants"][curve.label()] = {{"quantity", q.name}, {"unit", q.unit}, {"value", fc.fit.stiffness},
+                                           {"uncertainty", fc.fit.uncertainty}, {"source", curve.source}};
+    for (const std::string& w : fc.warnings) r.report["warnings"].push_back(curve.label() + ": " + w);
+  }
+}
+
+// cantilever: beam/cantilever.toml run by the mdem engine to its static state, its tip against
+// beam theory of the fitted constants (E I = D_s / T0, G J = K T0; mdem/cantilever_check.hpp).
+// Skipped when the scene, the model, the constants and the tolerance are those of the stored
+// result.
+void cantileverStage(ChainRun& r) {
+  const json& k = r.report["constants"];
+  const fs::path scenePath = r.c.dir / "beam" / "cantilever.toml";
+  if (!k.contains("D_soft_hartree_bohr2") || !k["D_soft_hartree_bohr2"].is_object()) {
+    r.log({{"stage", "cantilever"}, {"status", "not run (no soft bending constant)"}, {"seconds", 0.0}});
+    return;
+  }
+  const double t0 = k["T0_bohr"].get<double>();
+  const double toPnNm2 = units::si::kHartreeInZeptojoule * units::si::kBohrInNm;  // Hartree Bohr -> pN nm^2
+  mdem::CantileverTheory theory;
+  theory.bendingStiffness = k["D_soft_hartree_bohr2"]["value"].get<double>() / t0 * toPnNm2;
+  if (k.contains("K_hartree_per_rad2") && k["K_hartree_per_rad2"].is_object())
+    theory.torsionalStiffness = k["K_hartree_per_rad2"]["value"].get<double>() * t0 * toPnNm2;
+  theory.tolerance = r.c.cantileverTolerance;
+  theory.massPerLength = r.report["brick"]["mass_ag"].get<double>() / r.report["brick"]["length_nm"].get<double>();
+  const std::string hash = chainHash(readText(scenePath) + readText(r.c.dir / "beam" / "model.toml") +
+                                     fmt::format("{:.17g} {:.17g} {:.17g} {:.17g}", theory.bendingStiffness,
+                                                 theory.torsionalStiffness, theory.tolerance,
+                                                 theory.massPerLength));
+  json& rec = r.state["cantilever"];
+  json out = {{"stage", "cantilever"}, {"scene", scenePath.string()}};
+  if (rec.is_object() && rec.value("input_hash", "") == hash && rec.contains("result")) {
+    out["status"] = "skipped (done, inputs unchanged)";
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    const mdem::CantileverCheck c = mdem::checkCantilever(mdem::loadScene(scenePath.string()), theory);
+    json res = {{"length_nm", c.length},
+                {"bending_moment_pN_nm", c.bendingMoment},
+                {"twisting_moment_pN_nm", c.twistingMoment},
+                {"bending_stiffness_pN_nm2", theory.bendingStiffness},
+                {"torsional_stiffness_pN_nm2", theory.torsionalStiffness},
+                {"steps", c.steps},
+                {"relaxed", c.relaxed},
+                {"residual_moment_pN_nm", c.residualMoment},
+                {"tolerance", c.tolerance},
+                {"passed", c.passed},
+                {"first_bending_frequency_GHz", c.frequency},
+                {"first_bending_frequency_beam_theory_GHz", c.frequencyTheory},
+                {"quantities", json::array()}};
+    for (const mdem::CantileverQuantity& q : c.quantities)
+      res["quantities"].push_back({{"name", q.name}, {"unit", q.unit}, {"measured", q.measured},
+                                   {"beam_theory", q.theory}, {"relative_difference", q.relativeDifference()}});
+    rec = {{"input_hash", hash}, {"seconds", secondsSince(start)}, {"result", res}};
+    r.saveState();
+    out["status"] = "ran";
+  }
+  out["seconds"] = rec["seconds"];
+  r.report["cantilever"] = rec["result"];
+  r.log(out);
+  if (!rec["result"]["passed"].get<bool>())
+    std::cerr << "chain: warning: the mDEM cantilever differs from beam theory by more than the tolerance "
+                 "(chain.md)\n";
+}
+
+
+// knobs ([knobs]): the accuracy-against-time table of each listed scan stage (workflows/knobs.hpp,
+// as `mesochain bench knobs STAGE.scan.toml`) into knobs/STAGE.json and .csv. A stage's table is
+// skipped when its settings and its curve are unchanged; a killed knobs stage reruns the tables
+// not yet written.
+void knobsStage(ChainRun& r) {
+  const ChainKnobs& k = r.c.knobs;
+  const fs::path dir = r.c.dir / "knobs";
+  fs::create_directories(dir);
+  json& rec = r.state["knobs"];
+  if (!rec.is_object()) rec = {{"seconds", 0.0}, {"tables", json::object()}};
+  json tables = json::array();
+  int ran = 0;
+  for (const std::string& stage : k.stages) {
+    workflows::KnobsRequest q;
+    q.scanFile = (r.c.dir / (stage + ".scan.toml")).string();
+    q.scanOutputDir = r.c.dir.string();
+    q.kpoints = k.kpoints;
+    q.angular = k.angular;
+    q.sampling = k.sampling;
+    q.dispersion = k.dispersion;
+    q.temperature = k.temperature;
+    q.where = {r.c.file.string(), "knobs."};
+    q.progressBar = false;
+    json settings = {q.kpoints, q.angular, q.sampling, q.dispersion, q.temperature};
+    const std::string hash = chainHash(settings.dump() + readText(r.c.dir / (stage + ".json")));
+    const fs::path out = dir / (stage + ".json");
+    json& t = rec["tables"][stage];
+    if (!(t.is_object() && t.value("input_hash", "") == hash && fs::exists(out))) {
+      const auto start = std::chrono::steady_clock::now();
+      const workflows::KnobsTable table = workflows::runKnobs(q);
+      writeFileAtomically(out.string(), workflows::knobsJson(table).dump(2) + "\n");
+      writeFileAtomically((dir / (stage + ".csv")).string(), workflows::knobsCsv(table));
+      rec["seconds"] = rec.value("seconds", 0.0) + secondsSince(start);
+      t = {{"input_hash", hash}};
+      r.saveState();
+      ++ran;
+    }
+    json j = json::parse(readText(out));
+    j["stage"] = stage;
+    tables.push_back(j);
+  }
+  r.report["knobs"] = tables;
+  r.log({{"stage", "knobs"}, {"status", ran > 0 ? "ran" : "skipped (done, inputs unchanged)"},
+         {"seconds", rec["seconds"]}, {"outputs", dir.string()}});
+}
+
+}  // namespace
+
+int runChain(const ChainOptions& o) {
+  ChainRun r;
+  r.c = readChainFile(o.file);
+  if (o.check) return checkChain(r.c);
+  fs::create_directories(r.c.dir);
+  r.statePath = r.c.dir / "chain-state.json";
+  if (fs::exists(r.statePath)) {
+    r.state = json::parse(readText(r.statePath), nullptr, false);
+    if (r.state.is_discarded() || !r.state.is_object())
+      throw InputError(r.statePath.string(), "the chain state", "not a JSON object",
+                       "the file a chain writes (delete it to rerun every stage)");
+  }
+  const std::string cellText = readText(r.c.cellPath);
+  if (cellText.empty()) throw InputError(r.c.file.string(), "key cell", r.c.cellPath, "a readable cell file");
+  r.report["format"] = 1;
+  r.report["chain_file"] = r.c.file.string();
+  r.report["stages"] = json::array();
+  r.budget = o.stopAfter;
+  if (!referenceStage(r)) {
+    std::cout << "chain: stopped before the reference; rerun to continue\n";
+    return 4;
+  }
+  if (r.exitCode == 3) {
+    std::cerr << "chain: the reference did not converge within the step limit\n";
+    return 3;
+  }
+  beam::BeamInputs bin;
+  for (const auto& [stage, keys] : r.c.scans)
+    if (!scanStage(r, *stage, keys, cellText, bin)) return r.exitCode;
+  std::optional<beam::BeamRun> run;
+  if (r.c.beam) {
+    run = beamStage(r, std::move(bin));
+    cantileverStage(r);
+  } else {
+    curveFits(r, bin);
+  }
+  if (r.c.knobs.given) knobsStage(r);
+  requireFiniteJson(r.report, (r.c.dir / "chain.json").string());
+  writeFileAtomically((r.c.dir / "chain.json").string(), r.report.dump(2) + "\n");
+  writeFileAtomically((r.c.dir / "chain.md").string(), chainMarkdown(r.c, r.report, run ? &*run : nullptr));
+  for (const auto& [key, v] : r.report["constants"].items())
     if (v.is_object())
       std::cout << fmt::format("{:<22} {:.8g} +- {:.2g}\n", key, v["value"].get<double>(), v["uncertainty"].get<double>());
-  std::cout << "wrote " << (c.dir / "chain.json").string() << ", " << (c.dir / "chain.md").string() << "\n";
+  std::cout << "wrote " << (r.c.dir / "chain.json").string() << ", " << (r.c.dir / "chain.md").string() << "\n";
   return 0;
 }
 

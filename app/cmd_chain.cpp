@@ -1,5 +1,6 @@
-// `mesochain chain FILE.toml [--stop-after N]`: the scans, beam and bricks of one filament from
-// one file, every stage checkpointed and resumable (app/chain_run.hpp, docs/chain.md).
+// `mesochain chain FILE.toml [--stop-after N] [--check]`: the reference, scans, beam, bricks and
+// mDEM cantilever check of one filament from one file, every stage checkpointed and resumable
+// (app/chain_run.hpp, docs/chain.md).
 #include <memory>
 
 #include <CLI/CLI.hpp>
@@ -18,10 +19,12 @@ Command makeChainCommand() {
   auto sub = std::make_shared<CLI::App*>(nullptr);
   Command c;
   c.attach = [opt, sub](CLI::App& app) {
-    CLI::App* s = app.add_subcommand("chain", "scans -> beam -> bricks of one filament, resumable (docs/chain.md)");
+    CLI::App* s = app.add_subcommand("chain", "reference -> scans -> beam -> bricks -> mDEM check of one filament, resumable (docs/chain.md)");
     s->add_option("file", opt->file, "chain file (TOML)")->required();
-    s->add_option("--stop-after", opt->stopAfter, "compute at most N new scan points, then stop (rerun to resume)")
+    s->add_option("--stop-after", opt->stopAfter, "compute at most N new relaxations (the reference, scan points), then stop (rerun to resume)")
         ->check(integerIn(0, 1000000000));
+    s->add_flag("--check", opt->check,
+                "validate the chain file and the scan files it generates, list the stages, compute nothing");
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

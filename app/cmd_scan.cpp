@@ -20,7 +20,6 @@
 #include "common/errors.hpp"
 #include "common/plot/figure.hpp"
 #include "common/units.hpp"
-#include "objective/core/xyz_file.hpp"
 #include "objective/drivers/cell_calculator.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_file.hpp"
@@ -157,13 +156,7 @@ int runScanCommand(const ScanOptions& o) {
     if (png.empty()) png = std::filesystem::path(in.jsonPath).replace_extension(".png").string();
     writeScanPlot(in.jsonPath, png);
   }
-  if (!in.structurePrefix.empty())
-    for (std::size_t k = 0; k < r.points.size(); ++k) {
-      const std::string file = fmt::format("{}-{:03d}.xyz", in.structurePrefix, k);
-      objective::XyzExtras extras;
-      extras.energy = r.points[k].energy;
-      objective::writeXyzFile(file, r.points[k].cell, extras);
-    }
+  objective::writeScanStructures(r, in.structurePrefix);
   if (!r.complete) {
     std::cerr << fmt::format("mesochain: stopped after {} new points as asked; continue with "
                              "--resume\n", r.computed);

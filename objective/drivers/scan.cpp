@@ -19,6 +19,7 @@
 #include "objective/core/collapsed_tube_builder.hpp"
 #include "objective/core/kgrid.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"
+#include "objective/drivers/scan_reference.hpp"
 #include "objective/drivers/settings_fields.hpp"
 
 namespace mesochain::objective {
@@ -264,8 +265,10 @@ void collectSettings(const std::string& prefix, const S& s,
     if constexpr (VisitedSettings<T>) {
       if (role == FieldRole::Result) collectSettings(prefix + name + ".", v, out);
     } else if constexpr (std::is_invocable_v<T, int, double, double> ||
-                         std::is_invocable_v<T, const ScanPoint&, int, int>) {
-      // a callback (progress, pointDone): never a result setting
+                         std::is_invocable_v<T, const ScanPoint&, int, int> ||
+                         std::is_same_v<T, std::shared_ptr<const ScanReference>>) {
+      // a callback (progress, pointDone) or the given reference (checked on its own): never a
+      // result setting
     } else {
       if (role == FieldRole::Result) out[prefix + name] = valueText(v);
     }
@@ -325,18 +328,7 @@ namespace {
                                        "{})", old.inputHash, hash),
                      "a checkpoint of this scan with the same settings: " + fix);
   }
-  std::vector<std::string> changed;
-  for (const auto& [key, value] : now) {
-    const auto it = old.settings.find(key);
-    if (it == old.settings.end())
-      changed.push_back(fmt::format("{} (not in the checkpoint; now {})", key, value));
-    else if (it->second != value)
-      changed.push_back(fmt::format("{} (checkpoint {}, now {})", key, it->second, value));
-  }
-  for (const auto& [key, value] : old.settings)
-    if (!now.count(key)) changed.push_back(fmt::format("{} (only in the checkpoint)", key));
-  std::string list;
-  for (const std::string& c : changed) list += (list.empty() ? "" : "; ") + c;
+  const std::string list = settingChanges(old.settings, now, "checkpoint");
   throw InputError(path, "key settings",
                    fmt::format("a checkpoint of another scan input, changed: {}",
                                list.empty() ? "hash " + old.inputHash : list),
@@ -415,6 +407,15 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
   }
 
   std::map<int, ScanPoint>& done = checkpoint.completed;
+  if (s.reference && !done.count(0)) {
+    // The shared reference stands for point 0 (the same relaxation, done once).
+    requireSameReference(*s.reference, referenceIdentity(cell, calcSettings, s));
+    ScanPoint p = s.reference->point;
+    p.deformation = plan[0].deformation;
+    p.rotationOrder = plan[0].rotationOrder;
+    p.measuredCurvature = bendSource.sector ? 1.0 / meanRingRadius(p.cell) : std::nan("");
+    done[0] = std::move(p);
+  }
   // Converged SCC charges after each point computed here (the warm start of its neighbours).
   struct Charges {
     bool ring = false;

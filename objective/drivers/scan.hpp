@@ -60,6 +60,7 @@ const char* deformationUnit(ScanKind kind);       // "strain" | "rad_per_cell" |
 const char* bendDirectionName(BendDirection d);   // "soft" | "hard"
 
 struct ScanPoint;
+struct ScanReference;
 
 struct ScanSettings {
   ScanKind kind = ScanKind::Stretch;
@@ -82,6 +83,10 @@ struct ScanSettings {
   // order of the plan (the reference, index 0, first), with the point's index and the plan size:
   // the command line prints and flushes a table row per point (not only at the end).
   std::function<void(const ScanPoint& point, int index, int total)> pointDone;
+  // A reference relaxed before (relaxScanReference, objective/drivers/scan_reference.hpp):
+  // point 0 is taken from it instead of being relaxed again. Its referenceIdentity must equal
+  // this scan's (same cell, calculator, relaxation and tables), else InputError naming its file.
+  std::shared_ptr<const ScanReference> reference;
 };
 
 struct ScanPoint {
@@ -99,6 +104,16 @@ struct ScanPoint {
   int evaluations = 0;
   double measuredCurvature = std::numeric_limits<double>::quiet_NaN();  // bend, 1/Bohr
   ObjectiveCell cell;        // the relaxed cell
+};
+
+// The relaxed straight reference of a scan (point 0, at T0 when relax.relaxTranslation) with
+// the settings it was computed with: computed once (relaxScanReference) and handed to every
+// scan of the same cell, calculator and relaxation (ScanSettings::reference; the scan file's
+// key `reference`, docs/scan-file.md).
+struct ScanReference {
+  std::string source;                           // the file it was read from ("" if computed)
+  std::map<std::string, std::string> identity;  // referenceIdentity of its input
+  ScanPoint point;                              // deformation 0: the relaxed cell, its energy
 };
 
 struct ScanResult {

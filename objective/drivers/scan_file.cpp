@@ -10,6 +10,7 @@
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
 #include "objective/core/toml_table.hpp"
+#include "objective/drivers/scan_reference.hpp"
 
 namespace mesochain::objective {
 
@@ -61,7 +62,7 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   std::error_code ec;
   const TomlTable root(path, data, "");
   root.allowOnly({"format", "cell", "kind", "strains", "twist_deg_per_cell", "rotation_orders",
-                  "direction", "ring_angular", "relax", "dimensions", "output"});
+                  "direction", "ring_angular", "relax", "dimensions", "output", "reference"});
   const long format = root.integer("format", "format = 1");
   if (format != 1) root.fail("format", std::to_string(format), "format = 1");
 
@@ -175,6 +176,16 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   if (o->has("structures"))
     in.structurePrefix = inOutputDir(o->string("structures", "a path prefix for the relaxed cells"));
   s.identity = identityOf(in.cell);
+  if (root.has("reference")) {
+    // A reference relaxed before (`mesochain chain`'s reference stage): checked against this
+    // scan's settings when the scan starts (runScan), relative to the scan file like `cell`.
+    const std::string file = root.string("reference", "the path of a scan reference (JSON)");
+    const std::string refPath = relativeTo(path, file);
+    if (!fs::is_regular_file(refPath, ec))
+      root.fail("reference", "\"" + file + "\", which does not exist (looked for " + refPath + ")",
+                "an existing reference JSON (the path is relative to the scan file)");
+    s.reference = std::make_shared<const ScanReference>(readScanReference(refPath, in.cell.cell));
+  }
   return in;
 }
 

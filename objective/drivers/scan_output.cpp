@@ -9,6 +9,7 @@
 #include "common/atomic_file.hpp"
 #include "common/finite_output.hpp"
 #include "common/errors.hpp"
+#include "objective/core/xyz_file.hpp"
 
 namespace mesochain::objective {
 
@@ -80,6 +81,15 @@ void writeScanCurve(const ScanResult& r, const std::string& jsonPath, const std:
   requireFiniteJson(j, jsonPath.empty() ? std::string("the scan curve") : jsonPath);
   if (!jsonPath.empty()) writeFileAtomically(jsonPath, j.dump(2) + "\n");
   if (!csvPath.empty()) writeFileAtomically(csvPath, scanCurveCsv(r));
+}
+
+void writeScanStructures(const ScanResult& r, const std::string& prefix) {
+  if (prefix.empty()) return;
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    XyzExtras extras;
+    extras.energy = r.points[k].energy;
+    writeXyzFile(fmt::format("{}-{:03d}.xyz", prefix, k), r.points[k].cell, extras);
+  }
 }
 
 }  // namespace mesochain::objective

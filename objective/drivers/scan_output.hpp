@@ -17,5 +17,8 @@ std::string scanCurveCsv(const ScanResult& result);
 // Writes the JSON and/or CSV (an empty path skips that file); InputError when unwritable.
 void writeScanCurve(const ScanResult& result, const std::string& jsonPath,
                     const std::string& csvPath);
+// The relaxed cell of every point as PREFIX-NNN.xyz, in curve order, with its energy (the scan
+// file's [output] structures; read back by `mesochain bench knobs`). "" writes nothing.
+void writeScanStructures(const ScanResult& result, const std::string& prefix);
 
 }  // namespace mesochain::objective

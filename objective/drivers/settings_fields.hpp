@@ -111,7 +111,7 @@ template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, ScanSettings>
 void forEachField(S& s, F&& f) {
   auto& [kind, direction, values, rotationOrders, relax, ringAngular, dimensionsInterlayer,
-         identity, checkpointPath, resume, stopAfter, progressBar, pointDone] = s;
+         identity, checkpointPath, resume, stopAfter, progressBar, pointDone, reference] = s;
   f("kind", kind, FieldRole::Result);
   f("direction", direction, FieldRole::Result);
   // The list may change between runs: points are matched by their deformation (reuseCheckpoint).
@@ -126,6 +126,8 @@ void forEachField(S& s, F&& f) {
   f("stop_after", stopAfter, FieldRole::Run);
   f("progress_bar", progressBar, FieldRole::Run);
   f("point_done", pointDone, FieldRole::Run);
+  // Checked against the scan's referenceIdentity before use: the same point as a relaxed one.
+  f("reference", reference, FieldRole::Run);
 }
 
 // True for the settings types above (visited member by member).

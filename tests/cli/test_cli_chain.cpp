@@ -1,6 +1,10 @@
 // `mesochain chain` end to end on a (5,5) tube (seconds): a stopped chain resumes where its
 // scan checkpoint left off, finished stages are skipped, a changed stage reruns alone, and the
-// report's constants are those of `mesochain beam` run by hand on the stages' curves.
+// report's constants are those of `mesochain beam` run by hand on the stages' curves; the shared
+// reference (relaxed once, T0 found) is the one a scan finds by itself; the mDEM cantilever of
+// the fitted bricks agrees with beam theory; the knobs' table is the one of `mesochain bench
+// knobs`; the examples pass --check.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,13 +47,15 @@ TEST(CliChain, StagesResumeSkipAndMatchTheHandRunBeam) {
   ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
       << out;
   std::ofstream(dir / "chain.toml") << chainFile("[1280, 640]");
-  // Interrupted inside the first scan: exit 4, no report yet.
+  // Interrupted inside the first scan (the reference and two stretch points): exit 4, no report.
   ASSERT_EQ(runMesochain("chain chain.toml --stop-after 3", dir, out), 4) << out;
   EXPECT_FALSE(fs::exists(dir / "chain-out" / "chain.json"));
+  EXPECT_TRUE(fs::exists(dir / "chain-out" / "reference.json"));
   EXPECT_TRUE(fs::exists(dir / "chain-out" / "stretch.checkpoint.json"));
-  // Rerun: the stretch continues from its checkpoint, the others run.
+  // Rerun: the reference is kept, the stretch continues from its checkpoint, the others run.
   ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
   const json first = readJson(dir / "chain-out" / "chain.json");
+  EXPECT_EQ(status(first, "reference").rfind("skipped", 0), 0u);
   EXPECT_EQ(status(first, "stretch"), "resumed");
   EXPECT_EQ(status(first, "twist"), "ran");
   EXPECT_EQ(status(first, "bend_soft"), "ran");
@@ -75,11 +81,62 @@ TEST(CliChain, StagesResumeSkipAndMatchTheHandRunBeam) {
   }
   EXPECT_DOUBLE_EQ(first["brick"]["k_n_MPa_per_nm"].get<double>(), hand["brick"]["k_n_MPa_per_nm"].get<double>());
 
+  // The shared reference is the one a scan finds by itself: a stretch scan of the same cell and
+  // tolerance without `reference` relaxes its own straight cell and searches T0 (one thread
+  // each: the same bits).
+  std::ofstream(dir / "alone.toml") << "format = 1\ncell = \"cnt55t.toml\"\nkind = \"stretch\"\n"
+                                       "strains = [0.01]\n[relax]\nforce_tolerance = 1e-4\n"
+                                       "[output]\njson = \"alone.json\"\n";
+  ASSERT_EQ(runMesochain("scan alone.toml", dir, out), 0) << out;
+  const json alone = readJson(dir / "alone.json");
+  const json& ref = first["reference"];
+  EXPECT_DOUBLE_EQ(ref["T0_bohr"].get<double>(), alone["T0_bohr"].get<double>());
+  ASSERT_EQ(alone["points"][0]["deformation"].get<double>(), 0.0);
+  EXPECT_EQ(ref["rotation_order"].get<int>(), 1);  // a translational cell: energies per cell = per slice
+  EXPECT_DOUBLE_EQ(ref["energy_hartree_per_cell"].get<double>(), alone["points"][0]["energy_hartree"].get<double>());
+  EXPECT_NE(ref["T0_bohr"].get<double>(), 0.0);
+  // Every stage started from it: their reference points are its energy, and none relaxed it.
+  for (const char* stage : {"stretch", "twist", "bend_soft"}) {
+    const json curve = readJson(dir / "chain-out" / (std::string(stage) + ".json"));
+    EXPECT_DOUBLE_EQ(curve["T0_bohr"].get<double>(), ref["T0_bohr"].get<double>()) << stage;
+    for (const json& p : curve["points"]) {
+      if (p["deformation"].get<double>() == 0.0) {
+        EXPECT_DOUBLE_EQ(p["energy_hartree"].get<double>(), ref["energy_hartree_per_cell"].get<double>()) << stage;
+      }
+    }
+  }
+  const std::string md = mesochain::testing::slurp(dir / "chain-out" / "chain.md");
+  EXPECT_NE(md.find(fmt::format("T0 = {:.10g} Bohr", ref["T0_bohr"].get<double>())), std::string::npos) << md;
+
+  // The mDEM cantilever of the fitted bricks bends and twists as beam theory of the constants
+  // says, within the stated tolerance (a brick 10 % too stiff fails: tests/beam).
+  const json& cant = first["cantilever"];
+  EXPECT_TRUE(cant["passed"].get<bool>()) << cant.dump(2);
+  EXPECT_TRUE(cant["relaxed"].get<bool>());
+  EXPECT_EQ(cant["tolerance"].get<double>(), 0.01);
+  ASSERT_EQ(cant["quantities"].size(), 3u);
+  for (const json& q : cant["quantities"]) {
+    EXPECT_LT(std::abs(q["relative_difference"].get<double>()), 0.01) << q.dump();
+    EXPECT_GT(std::abs(q["measured"].get<double>()), 0.0) << q.dump();
+  }
+  // E I of the report is D_s / T0 of the fitted constant (pN nm^2 from Hartree Bohr).
+  const double ei = first["constants"]["D_soft_hartree_bohr2"]["value"].get<double>() /
+                    first["constants"]["T0_bohr"].get<double>() * 4.3597447222071e3 * 0.0529177210903;
+  EXPECT_NEAR(cant["bending_stiffness_pN_nm2"].get<double>() / ei, 1.0, 1e-9);
+  EXPECT_NE(md.find("PASS"), std::string::npos) << md;
+  // The first bending frequency of the bricks against the tip-mass cantilever: reported (the
+  // bricks' rotary inertia and lumping differ at (L/l)^2 = 1 % for 10 bricks).
+  const double f = cant["first_bending_frequency_GHz"].get<double>();
+  EXPECT_GT(f, 0.0);
+  EXPECT_NEAR(f / cant["first_bending_frequency_beam_theory_GHz"].get<double>(), 1.0, 0.02);
+
   // Nothing changed: every scan is skipped, the constants are the same.
   ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
   const json again = readJson(dir / "chain-out" / "chain.json");
-  for (const char* s : {"stretch", "twist", "bend_soft"}) EXPECT_EQ(status(again, s).rfind("skipped", 0), 0u) << s;
+  for (const char* s : {"reference", "stretch", "twist", "bend_soft", "cantilever"})
+    EXPECT_EQ(status(again, s).rfind("skipped", 0), 0u) << s;
   EXPECT_EQ(again["constants"], first["constants"]);
+  EXPECT_EQ(again["cantilever"], first["cantilever"]);
 
   // Another ring list: the bend reruns alone.
   std::ofstream(dir / "chain.toml") << chainFile("[2560, 1280]");
@@ -88,6 +145,67 @@ TEST(CliChain, StagesResumeSkipAndMatchTheHandRunBeam) {
   EXPECT_EQ(status(changed, "stretch").rfind("skipped", 0), 0u);
   EXPECT_EQ(status(changed, "bend_soft"), "ran");
   EXPECT_NE(changed["constants"]["D_soft_hartree_bohr2"]["value"], first["constants"]["D_soft_hartree_bohr2"]["value"]);
+  fs::remove_all(dir);
+}
+
+TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-knobs-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string out;
+  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
+      << out;
+  // A stretch alone, fitted without a beam (beam = false), with the k-point knob.
+  std::ofstream(dir / "chain.toml") << "format = 1\ncell = \"cnt55t.toml\"\nbeam = false\n"
+                                       "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n"
+                                       "[knobs]\nkpoints = [4, 16]\n";
+  ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
+  const json report = readJson(dir / "chain-out" / "chain.json");
+  EXPECT_EQ(status(report, "knobs"), "ran");
+  EXPECT_EQ(status(report, "beam"), "missing");
+  EXPECT_TRUE(report["constants"]["stretch"]["value"].get<double>() > 0.0) << report.dump(2);
+  ASSERT_EQ(report["knobs"].size(), 1u);
+  // The same rows as `mesochain bench knobs` on the stage's scan file (other timings).
+  ASSERT_EQ(runMesochain("bench knobs chain-out/stretch.scan.toml --scan-output-dir chain-out --kpoints 4,16 "
+                         "--json bench.json",
+                         dir, out),
+            0)
+      << out;
+  const json bench = readJson(dir / "bench.json");
+  const json& rows = report["knobs"][0]["rows"];
+  ASSERT_EQ(rows.size(), bench["rows"].size());
+  ASSERT_EQ(rows.size(), 3u);  // 4, the scan's 8, 16
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(rows[k]["setting"], bench["rows"][k]["setting"]);
+    EXPECT_DOUBLE_EQ(rows[k]["constant"].get<double>(), bench["rows"][k]["constant"].get<double>()) << k;
+    EXPECT_GT(rows[k]["cpu_s_per_evaluation"].get<double>(), 0.0);
+  }
+  EXPECT_NE(rows[0]["relative_difference"].get<double>(), 0.0);  // 4 k-points differ from 16
+  const std::string md = mesochain::testing::slurp(dir / "chain-out" / "chain.md");
+  EXPECT_NE(md.find("Accuracy against time"), std::string::npos) << md;
+  // Rerun: nothing changed, the table is kept.
+  ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
+  EXPECT_EQ(status(readJson(dir / "chain-out" / "chain.json"), "knobs").rfind("skipped", 0), 0u);
+  // A bad knob value names the chain file's key.
+  std::ofstream(dir / "bad.toml") << "format = 1\ncell = \"cnt55t.toml\"\nbeam = false\n"
+                                     "[stretch]\nstrains = [0.01]\n[knobs]\nkpoints = [0]\n";
+  EXPECT_EQ(runMesochain("chain bad.toml --check", dir, out), 2);
+  EXPECT_NE(out.find("knobs.kpoints"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+TEST(CliChain, ExamplesPassCheck) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-examples-{}", ::getpid());
+  fs::create_directories(dir);
+  std::string out;
+  const std::string examples = std::string(MESOCHAIN_SOURCE_DIR) + "/examples/";
+  ASSERT_EQ(runMesochain("chain " + examples + "chain-collapsed-3030.toml --check", dir, out), 0) << out;
+  for (const char* stage : {"reference", "stretch", "twist", "bend_soft", "bend_hard", "beam", "cantilever", "knobs"})
+    EXPECT_NE(out.find(std::string("  ") + stage), std::string::npos) << stage << "\n" << out;
+  EXPECT_FALSE(fs::exists(examples + "chain-collapsed-3030"));  // --check computes and writes nothing
+  ASSERT_EQ(runMesochain("chain " + examples + "chain-graphene-bilayer.toml --check", dir, out), 0) << out;
+  EXPECT_NE(out.find("bend_soft"), std::string::npos) << out;
+  EXPECT_NE(out.find("beam = false"), std::string::npos) << out;
   fs::remove_all(dir);
 }
 

@@ -144,6 +144,17 @@ TEST(ScanFile, BadInputNamesFileAndKey) {
   expectError(straight + "rotation_orders = [100]\nring_angular = 0\n" + out, "ring_angular");
   expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n[relax]\nforce_tolerance = -1\n" + out,
               "force_tolerance");
+  // A shared reference (docs/scan-file.md): a missing file names the key; a file that is no
+  // reference names that file.
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\nreference = \"nope.json\"\n" + out, "reference");
+  write("notref.json", "{\"format\": 1}\n");
+  try {
+    readScanFile(write("bad.toml", head + "kind = \"stretch\"\nstrains = [0.1]\nreference = \"notref.json\"\n" + out));
+    FAIL() << "a file that is no reference was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("notref.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scan reference"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ProgressBar, RendersCountsTimesAndNote) {

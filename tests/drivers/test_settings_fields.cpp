@@ -4,6 +4,7 @@
 // scanIdentity, while changing a Run member (progress, checkpoint path, --stop-after, the list)
 // leaves it as it is.
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -63,6 +64,7 @@ void perturb(T& v) {
   else if constexpr (std::is_same_v<T, std::string>) v += "x";
   else if constexpr (std::is_invocable_v<T, int, double, double>) v = [](int, double, double) {};
   else if constexpr (std::is_invocable_v<T, const ScanPoint&, int, int>) v = [](const ScanPoint&, int, int) {};
+  else if constexpr (std::is_same_v<T, std::shared_ptr<const ScanReference>>) v = std::make_shared<ScanReference>();
   else v.push_back(typename T::value_type{7});
 }
 

@@ -1,5 +1,5 @@
-// Inputs of `mesochain bench knobs` (app/bench_knobs.hpp): the finished scan with its relaxed
-// structures, and the knob settings parsed from the command line.
+// Inputs of the knobs' table (workflows/knobs.hpp): the finished scan with its relaxed
+// structures, and the knob settings parsed from the command line or a chain file.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -8,18 +8,17 @@
 
 #include <fmt/format.h>
 
-#include "app/bench_knobs.hpp"
+#include "workflows/knobs.hpp"
+
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/xyz_file.hpp"
 
-namespace mesochain::app::knobs {
+namespace mesochain::workflows {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* kCommandLine = "<command line>";
 
 // The deformation a relaxed structure stands for, from its symmetry alone (scan.hpp: stretch
 // T = T0 (1 + eps); twist gamma = gamma0 + dgamma; bend 1/R = 2 pi / (N_a T0), T0 the arc per
@@ -38,23 +37,24 @@ std::string structureName(const std::string& prefix, std::size_t k) {
 }
 
 // A positive integer (or "all" when allowed: returned as 0).
-int countValue(const std::string& option, const std::string& text, bool allowAll,
-               const std::string& expected) {
+int countValue(const KnobSource& where, const std::string& knob, const std::string& text,
+               bool allowAll, const std::string& expected) {
   if (allowAll && text == "all") return 0;
   int n = 0;
   const char* end = text.data() + text.size();
   const auto [p, ec] = std::from_chars(text.data(), end, n);
   if (text.empty() || ec != std::errc() || p != end || n < 1)
-    throw InputError(kCommandLine, option, "'" + text + "'", expected);
+    throw InputError(where.source, where.option(knob), "'" + text + "'", expected);
   return n;
 }
 
-double numberValue(const std::string& option, const std::string& text, const std::string& expected) {
+double numberValue(const KnobSource& where, const std::string& knob, const std::string& text,
+                   const std::string& expected) {
   double x = 0;
   const char* end = text.data() + text.size();
   const auto [p, ec] = std::from_chars(text.data(), end, x);
   if (text.empty() || ec != std::errc() || p != end || !std::isfinite(x) || !(x > 0))
-    throw InputError(kCommandLine, option, "'" + text + "'", expected);
+    throw InputError(where.source, where.option(knob), "'" + text + "'", expected);
   return x;
 }
 
@@ -144,7 +144,8 @@ FinishedScan readFinishedScan(const std::string& scanFile, const std::string& sc
   return f;
 }
 
-std::vector<KnobSetting> kpointSettings(const std::vector<std::string>& values, int own) {
+std::vector<KnobSetting> kpointSettings(const std::vector<std::string>& values, int own,
+                                        const KnobSource& where) {
   auto make = [](int k) {
     return KnobSetting{"kpoints", std::to_string(k), static_cast<double>(k), false,
                        [k](dftb::CalculatorSettings& s, dftb::CalculatorSettings&) {
@@ -153,12 +154,13 @@ std::vector<KnobSetting> kpointSettings(const std::vector<std::string>& values, 
   };
   std::vector<KnobSetting> listed;
   for (const std::string& v : values)
-    listed.push_back(make(countValue("--kpoints", v, false,
+    listed.push_back(make(countValue(where, "kpoints", v, false,
                                      "positive numbers of helical k-points, e.g. --kpoints 12,24,48")));
   return finish(std::move(listed), make(own));
 }
 
-std::vector<KnobSetting> angularSettings(const std::vector<std::string>& values, int own) {
+std::vector<KnobSetting> angularSettings(const std::vector<std::string>& values, int own,
+                                         const KnobSource& where) {
   // "all" (0) is exact: the most accurate.
   auto make = [](int mu) {
     return KnobSetting{"angular", mu == 0 ? "all" : std::to_string(mu),
@@ -171,14 +173,14 @@ std::vector<KnobSetting> angularSettings(const std::vector<std::string>& values,
   };
   std::vector<KnobSetting> listed;
   for (const std::string& v : values)
-    listed.push_back(make(countValue("--angular", v, true,
+    listed.push_back(make(countValue(where, "angular", v, true,
                                      "positive numbers of sampled angular quantum numbers or all, "
                                      "e.g. --angular 6,12,24")));
   return finish(std::move(listed), make(own));
 }
 
 std::vector<KnobSetting> samplingSettings(const std::vector<std::string>& values, int ownKpoints,
-                                          int ownAngular) {
+                                          int ownAngular, const KnobSource& where) {
   auto make = [](int k, int mu) {
     return KnobSetting{"sampling", fmt::format("{}:{}", k, mu == 0 ? std::string("all") : std::to_string(mu)),
                        static_cast<double>(k), false,
@@ -192,15 +194,16 @@ std::vector<KnobSetting> samplingSettings(const std::vector<std::string>& values
   std::vector<KnobSetting> listed;
   for (const std::string& v : values) {
     const auto colon = v.find(':');
-    if (colon == std::string::npos) throw InputError(kCommandLine, "--sampling", "'" + v + "'", expected);
-    listed.push_back(make(countValue("--sampling", v.substr(0, colon), false, expected),
-                          countValue("--sampling", v.substr(colon + 1), true, expected)));
+    if (colon == std::string::npos) throw InputError(where.source, where.option("sampling"), "'" + v + "'", expected);
+    listed.push_back(make(countValue(where, "sampling", v.substr(0, colon), false, expected),
+                          countValue(where, "sampling", v.substr(colon + 1), true, expected)));
   }
   return finish(std::move(listed), make(ownKpoints, ownAngular));
 }
 
 std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& values,
-                                            const dftb::DispersionSettings& own) {
+                                            const dftb::DispersionSettings& own,
+                                            const KnobSource& where) {
   // The largest distance of the minimum over the pairs (per-element parameters: the largest r0_A).
   double largest = own.r0;
   for (double r : own.elementR0) largest = std::max(largest, r);
@@ -235,16 +238,16 @@ std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& valu
     if (v == "ewald") {
       listed.push_back(ewald(own.ewaldTolerance, false));
     } else if (v.rfind("ewald:", 0) == 0) {
-      const double tol = numberValue("--dispersion", v.substr(6), expected);
-      if (tol < 1e-13 || tol > 1e-2) throw InputError(kCommandLine, "--dispersion", "'" + v + "'",
+      const double tol = numberValue(where, "dispersion", v.substr(6), expected);
+      if (tol < 1e-13 || tol > 1e-2) throw InputError(where.source, where.option("dispersion"), "'" + v + "'",
                                                       "an Ewald tolerance in [1e-13, 1e-2]");
       listed.push_back(ewald(tol, true));
     } else if (v.rfind("cutoff:", 0) == 0) {
-      const double r = numberValue("--dispersion", v.substr(7), expected);
-      if (!(r > r0)) throw InputError(kCommandLine, "--dispersion", "'" + v + "'", expected);
+      const double r = numberValue(where, "dispersion", v.substr(7), expected);
+      if (!(r > r0)) throw InputError(where.source, where.option("dispersion"), "'" + v + "'", expected);
       listed.push_back(cutoff(r));
     } else {
-      throw InputError(kCommandLine, "--dispersion", "'" + v + "'", expected);
+      throw InputError(where.source, where.option("dispersion"), "'" + v + "'", expected);
     }
   }
   return finish(std::move(listed), own.ewald ? ewald(own.ewaldTolerance, false)
@@ -252,7 +255,7 @@ std::vector<KnobSetting> dispersionSettings(const std::vector<std::string>& valu
 }
 
 std::vector<KnobSetting> temperatureSettings(const std::vector<std::string>& values,
-                                             double ownHartree) {
+                                             double ownHartree, const KnobSource& where) {
   // The lowest temperature is nearest the zero-temperature ground state: ranked most accurate.
   auto make = [](double kelvin) {
     return KnobSetting{"temperature", fmt::format("{:g}", kelvin), -kelvin, false,
@@ -263,10 +266,10 @@ std::vector<KnobSetting> temperatureSettings(const std::vector<std::string>& val
   };
   std::vector<KnobSetting> listed;
   for (const std::string& v : values)
-    listed.push_back(make(numberValue("--temperature", v,
+    listed.push_back(make(numberValue(where, "temperature", v,
                                       "positive electronic temperatures in K, e.g. "
                                       "--temperature 100,300,1000")));
   return finish(std::move(listed), make(ownHartree / units::kBoltzmannHartreePerKelvin));
 }
 
-}  // namespace mesochain::app::knobs
+}  // namespace mesochain::workflows

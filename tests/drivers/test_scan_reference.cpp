@@ -1,0 +1,92 @@
+// The shared reference of `mesochain chain` (objective/drivers/scan_reference.hpp): relaxed once
+// by relaxScanReference (from the settings of a scan of another kind), written and read back, it
+// is the reference a scan finds by itself (T0 and energy to the last bit), and a scan started
+// from it gives the same curve as one that relaxes its own; a reference of other settings is
+// refused, naming the file and the setting.
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "carbon_fixture.hpp"
+#include "common/errors.hpp"
+#include "objective/core/nanotube_builder.hpp"
+#include "objective/drivers/scan.hpp"
+#include "objective/drivers/scan_reference.hpp"
+
+namespace mesochain::objective {
+namespace {
+
+using namespace mesochain::objective::testing;
+
+ScanSettings stretch() {
+  ScanSettings s;
+  s.kind = ScanKind::Stretch;
+  s.values = {0.01, -0.01};
+  s.relax.forceTolerance = 1e-5;
+  s.relax.axialTolerance = 1e-5;
+  s.relax.relaxTranslation = true;
+  s.progressBar = false;
+  return s;
+}
+
+TEST(ScanReference, SharedReferenceIsTheOneAScanFindsByItself) {
+  // The (5,5) tube 1 % longer than its T0, so that the T0 search has work to do.
+  ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
+  tube.positions.row(2) *= 1.01;
+  tube.symmetry = Symmetry::screw(tube.symmetry.translation() * 1.01, tube.symmetry.twist(),
+                                  tube.symmetry.rotationOrder());
+  const auto params = carbon();
+  const auto calc = settings(16);
+  const ScanResult own = runScan(tube, params, calc, stretch());
+
+  // Relaxed from the settings of a twist scan: the reference does not depend on the kind.
+  ScanSettings twist = stretch();
+  twist.kind = ScanKind::Twist;
+  twist.values = {0.002};
+  ScanReference computed = relaxScanReference(tube, params, calc, twist);
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("mesochain-scan-reference-" + std::to_string(::getpid()) + ".json")).string();
+  writeScanReference(path, computed);
+  const ScanReference ref = readScanReference(path, tube);
+  EXPECT_EQ(ref.source, path);
+  EXPECT_EQ(ref.identity, referenceIdentity(tube, calc, stretch()));
+  EXPECT_NE(ref.point.cell.symmetry.translation(), tube.symmetry.translation());  // T0 was searched
+  // The same bits with one thread (ctest); threaded sums may differ in the last bit.
+  EXPECT_NEAR(ref.point.cell.symmetry.translation(), own.translation0, 1e-12);
+  ASSERT_EQ(own.points[1].deformation, 0.0);
+  EXPECT_NEAR(ref.point.energy, own.points[1].energy, 1e-12);
+  EXPECT_EQ(ref.point.evaluations, own.points[1].evaluations);
+
+  ScanSettings shared = stretch();
+  shared.reference = std::make_shared<const ScanReference>(ref);
+  const ScanResult r = runScan(tube, params, calc, shared);
+  EXPECT_EQ(r.computed, 2);  // the two strained points: the reference was not relaxed again
+  EXPECT_NEAR(r.translation0, own.translation0, 1e-12);
+  ASSERT_EQ(r.points.size(), own.points.size());
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    EXPECT_EQ(r.points[k].deformation, own.points[k].deformation);
+    EXPECT_NEAR(r.points[k].energy, own.points[k].energy, 1e-12) << k;
+  }
+
+  // Another force tolerance: refused, naming the file and the setting.
+  ScanSettings other = shared;
+  other.relax.forceTolerance = 1e-4;
+  try {
+    runScan(tube, params, calc, other);
+    ADD_FAILURE() << "a reference of another force tolerance was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scan.relax.force_tolerance"), std::string::npos) << e.what();
+  }
+  // Another cell (its atoms moved): refused too.
+  ObjectiveCell moved = tube;
+  moved.positions(0, 0) += 1e-3;
+  EXPECT_THROW(runScan(moved, params, calc, shared), InputError);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace mesochain::objective
