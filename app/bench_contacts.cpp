@@ -209,8 +209,7 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
                             std::to_string(p.full.pairs), std::to_string(p.ramp.pairs), std::to_string(p.vdwOnly.pairs),
                             fmt::format("{:.4f}", p.weightedLength), fmt::format("{:.4g}", p.full.rmsSpeed()),
                             fmt::format("{:.4g}", p.ramp.rmsSpeed()), fmt::format("{:.4g}", p.vdwOnly.rmsSpeed()),
-                            fmt::format("{:.4g}", p.weightedRmsSpeed()), fmt::format("{:.4g}", p.power(s.contacts.damping))}) +
-                 "\n";
+                            fmt::format("{:.4g}", p.weightedRmsSpeed()), fmt::format("{:.4g}", p.power(s.contacts.damping))});
     }
   }
   const mdem::EnergyLedger e = sim.energies();
@@ -302,7 +301,7 @@ Command makeBenchZippingCommand() {
         opt->elements, opt->rotationalGamma, opt->maxTime, opt->restKinetic);
     std::cout << "angle  alpha  gamma  h_ns     below_10  below_3  at_rest  final_deg  vdW_zJ   dashpot_zJ  residual_zJ"
                  "  n_full  n_ramp  n_vdw  v_full  v_vdw  v_weighted\n";
-    std::string series = opt->seriesPath.empty() ? std::string() : csvRecord(kZippingSeriesColumns) + "\n";
+    std::string series = opt->seriesPath.empty() ? std::string() : csvRecord(kZippingSeriesColumns);
     for (double a : opt->anglesDeg)
       for (double g : opt->gammas)
         for (double alpha : opt->alphas) {
