@@ -124,16 +124,23 @@ double crossingAngle(const mdem::Bodies& b, int n) {
   return std::acos(std::min(1.0, std::abs(ta.normalized().dot(tb.normalized()))));
 }
 
-// Band counts, relative speeds and dashpot rates of the two tubes (elements [0, n) and [n, 2n)).
-mdem::DashpotProbe probeZipping(const mdem::Simulation& sim, const mdem::Scene& s, int n) {
+// Band counts, relative speeds and dashpot rates of the two tubes (elements [0, n) and [n, 2n)),
+// the moment about the centroid of all elements (the crossing point), and the reduced moment of
+// inertia of the two tubes about their own centroids (ag nm^2, element centres as point masses).
+mdem::DashpotProbe probeZipping(const mdem::Simulation& sim, const mdem::Scene& s, int n, double* reducedInertia) {
   const mdem::Bodies& b = sim.bodies();
   std::vector<mdem::ProbeElement> el(b.size());
+  mdem::Vec3 centroid[2] = {mdem::Vec3::Zero(), mdem::Vec3::Zero()};
   for (int i = 0; i < b.size(); ++i) {
     el[i].segment = {b.position[i], mdem::rotate(b.orientation[i], mdem::Vec3::UnitZ()), 0.5 * kLength};
     el[i].radius = kRadius, el[i].velocity = b.velocity[i], el[i].angularVelocity = b.angularVelocityWorld(i);
     el[i].filament = i < n ? 0 : 1;
+    centroid[el[i].filament] += b.position[i] / n;
   }
-  return mdem::probeDashpots(s.contacts.damping, s.contacts.vdw.cutoffGap, el);
+  double inertia[2] = {0.0, 0.0};
+  for (int i = 0; i < b.size(); ++i) inertia[el[i].filament] += b.mass[i] * (b.position[i] - centroid[el[i].filament]).squaredNorm();
+  *reducedInertia = inertia[0] * inertia[1] / (inertia[0] + inertia[1]);
+  return mdem::probeDashpots(s.contacts.damping, s.contacts.vdw.cutoffGap, el, 0.5 * (centroid[0] + centroid[1]));
 }
 
 struct ZippingResult {
@@ -197,7 +204,8 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
     track(r.aligned10, a < 10 * deg);
     track(r.aligned3, a < 3 * deg);
     track(r.rest, e.kinetic() < o.restKinetic);
-    const mdem::DashpotProbe p = probeZipping(sim, s, n);
+    double inertia;
+    const mdem::DashpotProbe p = probeZipping(sim, s, n, &inertia);
     samples.push_back({double(p.full.pairs), double(p.ramp.pairs), double(p.vdwOnly.pairs), p.full.sumSpeedSquared,
                          p.vdwOnly.sumSpeedSquared, p.weightedLength, p.translationalRate});
     if (series) {
@@ -209,7 +217,11 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
                             std::to_string(p.full.pairs), std::to_string(p.ramp.pairs), std::to_string(p.vdwOnly.pairs),
                             fmt::format("{:.4f}", p.weightedLength), fmt::format("{:.4g}", p.full.rmsSpeed()),
                             fmt::format("{:.4g}", p.ramp.rmsSpeed()), fmt::format("{:.4g}", p.vdwOnly.rmsSpeed()),
-                            fmt::format("{:.4g}", p.weightedRmsSpeed()), fmt::format("{:.4g}", p.power(s.contacts.damping))});
+                            fmt::format("{:.4g}", p.weightedRmsSpeed()), fmt::format("{:.4g}", p.power(s.contacts.damping)),
+                            fmt::format("{:.4g}", p.weightedLengthMoment), fmt::format("{:.4g}", inertia),
+                            gamma > 0 && p.weightedLengthMoment > 0
+                                ? fmt::format("{:.4g}", 1e3 * inertia / (gamma * p.weightedLengthMoment))
+                                : std::string()});
     }
   }
   const mdem::EnergyLedger e = sim.energies();
@@ -238,7 +250,8 @@ const std::vector<std::string> kZippingSeriesColumns{
     "angle_deg", "alpha", "gamma_pN_ns_per_nm2", "time_ns", "end_to_end_angle_deg", "kinetic_zJ", "vdw_zJ",
     "dashpot_dissipated_zJ", "residual_zJ", "pairs_full", "pairs_ramp", "pairs_vdw_only", "weighted_length_nm",
     "rms_speed_full_nm_per_ns", "rms_speed_ramp_nm_per_ns", "rms_speed_vdw_only_nm_per_ns",
-    "weighted_rms_speed_nm_per_ns", "dashpot_power_zJ_per_ns"};
+    "weighted_rms_speed_nm_per_ns", "dashpot_power_zJ_per_ns", "weighted_length_moment_nm3",
+    "reduced_inertia_ag_nm2", "turn_damping_time_ps"};
 
 std::string timeOrDash(double t) { return t < 0 ? std::string("-") : fmt::format("{:.3f}", t); }
 }  // namespace

@@ -3,7 +3,7 @@
 namespace mesochain::mdem {
 
 DashpotProbe probeDashpots(const ContactDampingSpec& spec, double vdwCutoffGap,
-                           const std::vector<ProbeElement>& elements) {
+                           const std::vector<ProbeElement>& elements, const Vec3& pivot) {
   DashpotProbe probe;
   const int n = static_cast<int>(elements.size());
   for (int i = 0; i < n; ++i)
@@ -26,6 +26,7 @@ DashpotProbe probeDashpots(const ContactDampingSpec& spec, double vdwCutoffGap,
       const double lw = dashpotContact(spec, a.segment, b.segment, a.radius, b.radius).weightedLength;
       probe.weightedLength += lw;
       probe.translationalRate += lw * v2;
+      probe.weightedLengthMoment += lw * (c - pivot).squaredNorm();
       probe.rotationalRate += lw * (b.angularVelocity - a.angularVelocity).squaredNorm();
     }
   return probe;

@@ -12,6 +12,8 @@
 //   P = gamma sum(lambda s |v_rel|^2) + gamma_r sum(lambda s |w_b - w_a|^2)   (pN nm/ns = zJ/ns),
 // which equals -(sum of F.v + M.w) of the dashpot forces of contactDashpot (the identity the test
 // checks).
+// sum(lambda s |c - pivot|^2) gives the dashpots' resistance to a relative rotation about a pivot
+// (the crossing point of two zipping tubes).
 #include <cmath>
 #include <vector>
 
@@ -31,6 +33,9 @@ struct DashpotProbe {
   double weightedLength = 0.0;     // sum of lambda s, nm
   double translationalRate = 0.0;  // sum of lambda s |v_rel|^2, nm^3/ns^2 (power / gamma)
   double rotationalRate = 0.0;     // sum of lambda s |w_b - w_a|^2, nm/ns^2 (power / gamma_r)
+  // sum of lambda s |c - pivot|^2, nm^3: the dashpots resist a relative rotation about `pivot` at
+  // rate theta' with the moment gamma (this) theta' (translational part).
+  double weightedLengthMoment = 0.0;
   // Power dissipated by the dashpots, zJ/ns.
   double power(const ContactDampingSpec& spec) const {
     return spec.translational * translationalRate + spec.rotational * rotationalRate;
@@ -50,8 +55,9 @@ struct ProbeElement {
 };
 
 // All pairs of elements of different filaments (O(N^2): for small calibration scenes; no
-// periodic images). `vdwCutoffGap` (nm) closes the vdwOnly band.
+// periodic images). `vdwCutoffGap` (nm) closes the vdwOnly band; `pivot` is the point the
+// weightedLengthMoment is taken about.
 DashpotProbe probeDashpots(const ContactDampingSpec& spec, double vdwCutoffGap,
-                           const std::vector<ProbeElement>& elements);
+                           const std::vector<ProbeElement>& elements, const Vec3& pivot = Vec3::Zero());
 
 }  // namespace mesochain::mdem

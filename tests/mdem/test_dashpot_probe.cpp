@@ -61,6 +61,12 @@ TEST(MdemDashpotProbe, BandsSpeedsAndRatesOfAHandMadeConfiguration) {
   EXPECT_NEAR(p.weightedLength, 5.0, 1e-12);
   EXPECT_NEAR(p.translationalRate, 2.0 * (vAB * vAB + vBE * vBE) + 1.0 * 1.0, 1e-12);
   EXPECT_NEAR(p.rotationalRate, 2.0 * 1.0 + 2.0 * 1.0, 1e-12);
+  // About the origin: contact points at y = R + 0.15 (A-B), 2 (R + 0.15) + R + 0.15 (B-E) and
+  // -(R + 0.375) (A-C).
+  const double yAB = spinAB, yBE = 3.0 * spinAB, yAC = kTubeRadius + 0.375;
+  EXPECT_NEAR(p.weightedLengthMoment, 2.0 * yAB * yAB + 2.0 * yBE * yBE + 1.0 * yAC * yAC, 1e-12);
+  EXPECT_NEAR(probeDashpots(spec(), 1.2, el, Vec3(0, yAB, 0)).weightedLengthMoment,
+              2.0 * 4.0 * yAB * yAB + 1.0 * (yAC + yAB) * (yAC + yAB), 1e-12);
   EXPECT_NEAR(p.power(spec()), 2.0 * p.translationalRate + 0.2 * p.rotationalRate, 1e-12);
 
   // One filament: nothing; beyond every cut-off: nothing.
