@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "beam/beam_model.hpp"
+#include "beam_constants_support.hpp"
 #include "beam/brick.hpp"
 #include "beam/mdem_export.hpp"
 #include "common/units.hpp"
@@ -25,17 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-BeamConstants collapsedTubeConstants() {
-  // A rectangle h = 2.0, w = 40 Bohr, T0 = 4.65 Bohr, Y = 0.034, G = 0.013 Hartree / Bohr^3.
-  const double y = 0.034, g = 0.013, h = 2.0, w = 40.0, t0 = 4.65;
-  BeamConstants c;
-  c.cellLength = t0;
-  c.stretch = y * h * w * t0;
-  c.twist = g * (h * w * w * w + w * h * h * h) / 12.0 / t0;
-  c.bendSoft = y * w * h * h * h / 12.0 * t0;
-  c.bendHard = y * h * w * w * w / 12.0 * t0;
-  return c;
-}
+using testing::collapsedTubeConstants;
 
 TEST(BeamBrick, InertiaMatchesASumOverPointMasses) {
   const Beam beam = rectangleMeasuredThickness(collapsedTubeConstants(), 6.4, "test");

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "beam/beam_model.hpp"
+#include "beam_constants_support.hpp"
 #include "beam/brick.hpp"
 #include "beam/mdem_export.hpp"
 #include "common/errors.hpp"
@@ -26,15 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(BeamCantileverCheck, BricksMatchBeamTheoryAndAWrongStiffnessFails) {
-  // A collapsed-tube-like rectangle h = 2.0, w = 40 Bohr, T0 = 4.65 Bohr, Y = 0.034,
-  // G = 0.013 Hartree / Bohr^3 (per-cell constants C, K, D_s, D_h of that section).
-  const double y = 0.034, g = 0.013, h = 2.0, w = 40.0, t0 = 4.65;
-  BeamConstants c;
-  c.cellLength = t0;
-  c.stretch = y * h * w * t0;
-  c.twist = g * (h * w * w * w + w * h * h * h) / 12.0 / t0;
-  c.bendSoft = y * w * h * h * h / 12.0 * t0;
-  c.bendHard = y * h * w * w * w / 12.0 * t0;
+  // A collapsed-tube-like rectangle (beam_constants_support.hpp).
+  const BeamConstants c = testing::collapsedTubeConstants();
+  const double t0 = c.cellLength;
   const Brick b = discretise(rectangleFourConstants(c, "test"), 4, 120 * units::si::kCarbonMassDalton, "test");
   const fs::path dir = fs::temp_directory_path() / ("cantilever-check-" + std::to_string(::getpid()));
   fs::create_directories(dir);
