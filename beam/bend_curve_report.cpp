@@ -1,4 +1,5 @@
 #include "beam/bend_curve_report.hpp"
+#include "beam/fit_plot.hpp"
 
 #include <cmath>
 
@@ -14,7 +15,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr plot::Color kShade{222, 234, 250}, kEdge{70, 100, 160};
 
 double nm() { return units::si::kBohrInNm; }
 
@@ -110,8 +110,8 @@ plot::Image renderBendCurvePlot(const BendCurve& c, const std::string& title, in
     const std::size_t q = static_cast<std::size_t>(c.quadraticPoints);
     bandHi = q < k.size() ? std::sqrt(k[q - 1] * k[q]) : khi;
     band = fig.series.size();
-    fig.add("", {std::sqrt(klo * bandHi), std::sqrt(klo * bandHi)}, {ylo, yhi}, {.color = kShade});
-    fig.add("quadratic regime", {bandHi, bandHi}, {ylo, yhi}, {.dashed = true, .color = kEdge, .lineWidth = 1.5});
+    fig.add("", {std::sqrt(klo * bandHi), std::sqrt(klo * bandHi)}, {ylo, yhi}, {.color = kFitWindowShade});
+    fig.add("quadratic regime", {bandHi, bandHi}, {ylo, yhi}, {.dashed = true, .color = kFitWindowEdge, .lineWidth = 1.5});
   }
   const double d0 = c.linear.value * f;
   fig.add(fmt::format("D_0 = {:.4g} eV nm^{{2}}", d0), {klo, khi}, {d0, d0},

@@ -14,7 +14,7 @@ namespace mesochain::beam {
 namespace {
 
 constexpr double kMeVPerHartree = 1e3 * units::kHartreeInEv;
-constexpr plot::Color kShade{222, 234, 250}, kEdge{70, 100, 160}, kZero{150, 150, 150}, kOutside{225, 135, 0};
+constexpr plot::Color kShade = kFitWindowShade, kEdge = kFitWindowEdge, kZero{150, 150, 150}, kOutside{225, 135, 0};
 
 std::string deformationLabel(const std::string& unit) {
   if (unit == "strain") return "strain";

@@ -14,6 +14,9 @@
 
 namespace mesochain::beam {
 
+// The colours of the fit plots: the fitted window's shading and its edges.
+inline constexpr plot::Color kFitWindowShade{222, 234, 250}, kFitWindowEdge{70, 100, 160};
+
 // "4.2156 +/- 0.0012" (the uncertainty to two significant digits, the value to the same
 // decimal place; "%.6g" alone when the uncertainty is 0 or not finite).
 std::string formatWithUncertainty(double value, double uncertainty);
