@@ -15,7 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "mdem/contacts/tube_potential.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/units.hpp"

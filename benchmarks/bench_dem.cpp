@@ -26,7 +26,7 @@
 #define MESOCHAIN_CALLGRIND_END()
 #endif
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::app {

@@ -22,9 +22,9 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/bench_dftb_lapack.hpp"
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "benchmarks/bench_dftb_lapack.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/plot/canvas.hpp"

@@ -6,7 +6,7 @@
 //     uses, m from the same Fermi filling),
 // the bound being the faster of the two per k-point. Also zpotrf alone: what an SCC iteration
 // saves per k-point by reusing the overlap's Cholesky factor.
-#include "app/bench_dftb_lapack.hpp"
+#include "benchmarks/bench_dftb_lapack.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -15,8 +15,8 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/bench_network_mts.hpp"
-#include "app/commands.hpp"
+#include "benchmarks/bench_network_mts.hpp"
+#include "app/cli/command.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"

@@ -15,8 +15,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/errors.hpp"

@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"

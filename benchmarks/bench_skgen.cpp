@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "skgen/element_basis.hpp"
 #include "skgen/two_centre.hpp"
 
