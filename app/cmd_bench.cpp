@@ -1,5 +1,6 @@
-// `mesochain bench WHAT`: benchmarks that print ratios and shares (never timed tests).
-// Each benchmark is a Command attached under `bench` (bench_*.cpp).
+// `mesochain bench knobs`: what each accuracy knob of a finished scan costs and changes
+// (bench_knobs.cpp). The timing benchmarks (dftb, kpoints, dem, ewald, scc, network, sliding,
+// zipping, scan, skgen) are the program mesochain-bench (benchmarks/main.cpp).
 #include <memory>
 #include <vector>
 
@@ -9,27 +10,15 @@
 
 namespace mesochain::app {
 
-Command makeBenchDftbCommand();
-Command makeBenchKpointsCommand();
-Command makeBenchDemCommand();
-Command makeBenchEwaldCommand();
-Command makeBenchSccCommand();
-Command makeBenchNetworkCommand();
-Command makeBenchSlidingCommand();
-Command makeBenchZippingCommand();
-Command makeBenchScanCommand();
-Command makeBenchSkgenCommand();
 Command makeBenchKnobsCommand();
 
 Command makeBenchCommand() {
-  auto subs = std::make_shared<std::vector<Command>>(std::vector<Command>{
-      makeBenchDftbCommand(), makeBenchKpointsCommand(), makeBenchDemCommand(),
-      makeBenchEwaldCommand(), makeBenchSccCommand(), makeBenchNetworkCommand(), makeBenchSlidingCommand(), makeBenchZippingCommand(),
-      makeBenchScanCommand(), makeBenchSkgenCommand(), makeBenchKnobsCommand()});
+  auto subs = std::make_shared<std::vector<Command>>(std::vector<Command>{makeBenchKnobsCommand()});
   Command c;
   c.attach = [subs](CLI::App& app) {
     auto* bench = app.add_subcommand(
-        "bench", "benchmarks: dftb, kpoints, dem, ewald, scc, network, sliding, zipping, scan, skgen, knobs");
+        "bench", "knobs: accuracy against cost of a finished scan (the timing benchmarks are the program "
+                 "mesochain-bench: `mesochain-bench --help`)");
     bench->require_subcommand(1);
     for (auto& s : *subs) s.attach(*bench);
   };

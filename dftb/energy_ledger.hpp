@@ -13,7 +13,8 @@
 // no list of term names to keep in step.
 #include <string>
 #include <string_view>
-#include <vector>
+
+#include "common/named_ledger.hpp"
 
 namespace mesochain::dftb {
 
@@ -26,33 +27,19 @@ struct LedgerEntry {
   double value = 0.0;  // Hartree per cell
 };
 
-class EnergyLedger {
+// has, operator[] (0 for an entry not reported), at, merge, entries, names: common/named_ledger.hpp.
+class EnergyLedger : public NamedLedger<LedgerEntry> {
  public:
+  EnergyLedger() : NamedLedger("dftb energy ledger") {}
   // Adds `value` to the entry `name` (created at the end when new, with `label`; an empty label
   // is the name). The kind of an existing entry must match (a programming error otherwise:
   // std::logic_error).
   void add(std::string_view name, EnergyKind kind, double value, std::string_view label = {});
-  // Every entry of `other`, added in its order.
-  void merge(const EnergyLedger& other);
-
-  bool has(std::string_view name) const { return find(name) != nullptr; }
-  // The value of an entry; 0 when the ledger has no such entry (a term that is not built).
-  double operator[](std::string_view name) const;
-  // The value of an entry that must be there (std::out_of_range otherwise).
-  double at(std::string_view name) const;
 
   double total() const { return sum(EnergyKind::Energy); }    // E
   double entropy() const { return sum(EnergyKind::Entropy); }  // TS
   double free() const { return total() - entropy(); }         // F = E - TS (Mermin)
   double extrapolated() const { return total() - 0.5 * entropy(); }  // E - TS/2, the T -> 0 estimate
-
-  const std::vector<LedgerEntry>& entries() const { return entries_; }
-  bool empty() const { return entries_.empty(); }
-
- private:
-  const LedgerEntry* find(std::string_view name) const;
-  double sum(EnergyKind kind) const;
-  std::vector<LedgerEntry> entries_;
 };
 
 }  // namespace mesochain::dftb

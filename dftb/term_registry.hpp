@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/registry.hpp"
 #include "dftb/energy_term.hpp"
 #include "parallel/communicator.hpp"
 
@@ -57,8 +58,9 @@ struct TermRegistration {
   std::function<std::shared_ptr<const ChargeInteraction>(const TermBuild&)> makeInteraction;
 };
 
-// Registers a term; returns true (for the static initialiser). Two terms of one name are a
-// programming error (std::logic_error at start-up).
+// Registers a term; returns true (for the static initialiser). Two terms of one name, or a term
+// without wanted() or without exactly the factory of its kind, are a programming error
+// (std::logic_error at start-up). The registry itself is common/registry.hpp.
 bool registerTerm(TermRegistration registration);
 // Every registered term, by order (then name).
 std::vector<const TermRegistration*> registeredTerms();
@@ -66,11 +68,5 @@ const TermRegistration* findTerm(std::string_view name);
 
 }  // namespace mesochain::dftb
 
-#define MESOCHAIN_DFTB_CONCAT_(a, b) a##b
-#define MESOCHAIN_DFTB_CONCAT(a, b) MESOCHAIN_DFTB_CONCAT_(a, b)
 // MESOCHAIN_DFTB_TERM(TermRegistration{...}) at namespace scope in the term's .cpp.
-#define MESOCHAIN_DFTB_TERM(...)                                                    \
-  namespace {                                                                       \
-  [[maybe_unused]] const bool MESOCHAIN_DFTB_CONCAT(dftbTermRegistered_, __LINE__) = \
-      ::mesochain::dftb::registerTerm(__VA_ARGS__);                                 \
-  }
+#define MESOCHAIN_DFTB_TERM(...) MESOCHAIN_REGISTER_AT_STARTUP(::mesochain::dftb::registerTerm(__VA_ARGS__))

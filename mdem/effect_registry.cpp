@@ -1,7 +1,6 @@
 #include "mdem/effect_registry.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "common/errors.hpp"
 #include "mdem/scene.hpp"
@@ -10,8 +9,8 @@ namespace mesochain::mdem {
 
 namespace {
 // Function-local static: registrations run during static initialisation of other files.
-std::vector<EffectRegistration>& registry() {
-  static std::vector<EffectRegistration> r;
+Registry<EffectRegistration>& registry() {
+  static Registry<EffectRegistration> r("mdem effect");
   return r;
 }
 }  // namespace
@@ -29,26 +28,13 @@ void Effect::addForces(State& state) {
 }
 
 bool registerEffect(EffectRegistration r) {
-  for (const EffectRegistration& o : registry())
-    if (o.name == r.name) throw std::logic_error("mdem effect '" + r.name + "' registered twice");
-  registry().push_back(std::move(r));
+  registry().add(std::move(r));
   return true;
 }
 
-std::vector<const EffectRegistration*> registeredEffects() {
-  std::vector<const EffectRegistration*> out;
-  for (const EffectRegistration& r : registry()) out.push_back(&r);
-  std::sort(out.begin(), out.end(), [](const EffectRegistration* a, const EffectRegistration* b) {
-    return a->order != b->order ? a->order < b->order : a->name < b->name;
-  });
-  return out;
-}
+std::vector<const EffectRegistration*> registeredEffects() { return registry().ordered(); }
 
-const EffectRegistration* findEffect(std::string_view name) {
-  for (const EffectRegistration& r : registry())
-    if (r.name == name) return &r;
-  return nullptr;
-}
+const EffectRegistration* findEffect(std::string_view name) { return registry().find(name); }
 
 std::vector<EffectPtr> buildEffects(const Scene& scene) {
   std::string known;

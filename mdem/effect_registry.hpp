@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/registry.hpp"
 #include "mdem/effect.hpp"
 
 namespace mesochain::mdem {
@@ -53,7 +54,7 @@ struct EffectRegistration {
 };
 
 // Registers an effect; returns true (for the static initialiser). Two effects of one name are a
-// programming error (std::logic_error at start-up).
+// programming error (std::logic_error at start-up). The registry itself is common/registry.hpp.
 bool registerEffect(EffectRegistration registration);
 // Every registered effect, by order (then name).
 std::vector<const EffectRegistration*> registeredEffects();
@@ -65,11 +66,5 @@ std::vector<EffectPtr> buildEffects(const Scene& scene);
 
 }  // namespace mesochain::mdem
 
-#define MESOCHAIN_MDEM_CONCAT_(a, b) a##b
-#define MESOCHAIN_MDEM_CONCAT(a, b) MESOCHAIN_MDEM_CONCAT_(a, b)
 // MESOCHAIN_MDEM_EFFECT(EffectRegistration{...}) at namespace scope in the effect's .cpp.
-#define MESOCHAIN_MDEM_EFFECT(...)                                                   \
-  namespace {                                                                        \
-  [[maybe_unused]] const bool MESOCHAIN_MDEM_CONCAT(mdemEffectRegistered_, __LINE__) = \
-      ::mesochain::mdem::registerEffect(__VA_ARGS__);                                \
-  }
+#define MESOCHAIN_MDEM_EFFECT(...) MESOCHAIN_REGISTER_AT_STARTUP(::mesochain::mdem::registerEffect(__VA_ARGS__))

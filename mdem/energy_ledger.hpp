@@ -10,7 +10,8 @@
 //               so not in total(); total() + dissipated() is conserved without other damping.
 #include <string>
 #include <string_view>
-#include <vector>
+
+#include "common/named_ledger.hpp"
 
 namespace mesochain::mdem {
 
@@ -22,30 +23,21 @@ struct LedgerEntry {
   double value = 0.0;  // zJ
 };
 
-class EnergyLedger {
+// has, operator[] (0 for an entry not reported: an effect that is not built stores nothing),
+// entries, names (the layout of a CSV row): common/named_ledger.hpp.
+class EnergyLedger : public NamedLedger<LedgerEntry> {
  public:
+  EnergyLedger() : NamedLedger("energy ledger") {}
   // Adds `value` to the entry `name` (created at the end when new). The kind of an existing
   // entry must match (a programming error otherwise: std::logic_error).
-  void add(std::string_view name, EnergyKind kind, double value);
-
-  bool has(std::string_view name) const { return find(name) != nullptr; }
-  // The value of an entry; 0 when the ledger has no such entry (an effect that is not built
-  // stores nothing).
-  double operator[](std::string_view name) const;
+  void add(std::string_view name, EnergyKind kind, double value) {
+    if (!addToExisting(name, kind, value)) entries_.push_back({std::string(name), kind, value});
+  }
 
   double kinetic() const { return sum(EnergyKind::Kinetic); }
   double potential() const { return sum(EnergyKind::Potential); }
   double dissipated() const { return sum(EnergyKind::Dissipated); }
   double total() const { return kinetic() + potential(); }
-
-  const std::vector<LedgerEntry>& entries() const { return entries_; }
-  // Entry names in order (the layout of a CSV row).
-  std::vector<std::string> names() const;
-
- private:
-  const LedgerEntry* find(std::string_view name) const;
-  double sum(EnergyKind kind) const;
-  std::vector<LedgerEntry> entries_;
 };
 
 class BinaryWriter;

@@ -17,7 +17,7 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
-#include "objective/core/toml_table.hpp"
+#include "common/toml_table.hpp"
 #include "skgen/repulsive_fit.hpp"
 #include "skgen/skf_writer.hpp"
 
@@ -29,8 +29,6 @@ constexpr double kMaxSkgenGridRows = 100000;
 
 
 namespace {
-using objective::detail::TomlTable;
-using objective::detail::describe;
 
 const char* kShellNames = "spdf";
 
@@ -77,7 +75,7 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
     if (!ex.is_array() || ex.as_array().empty())
       t.fail("exponents_per_bohr", describe(ex), "a non-empty array of exponents in 1/bohr");
     for (const toml::value& x : ex.as_array()) {
-      const auto a = objective::detail::asNumber(x);
+      const auto a = asNumber(x);
       if (!a || !(*a > 0.0) || !std::isfinite(*a))
         t.fail("exponents_per_bohr", describe(x), "exponents > 0 (1/bohr)");
       s.slater.exponents.push_back(*a);

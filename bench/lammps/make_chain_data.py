@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Writes a LAMMPS data file of bonded chains, the peer of `mesochain bench dem`.
+"""Writes a LAMMPS data file of bonded chains, the peer of `mesochain-bench dem`.
 
 Usage: make_chain_data.py TOTAL_PARTICLES CHAIN_LENGTH OUTPUT.data
 
 Chains of point particles (mass 1, spacing 1 along z) placed on a square grid of pitch 5 in x
-and y like the filaments of `mesochain bench dem`; bonds between consecutive particles of a
+and y like the filaments of `mesochain-bench dem`; bonds between consecutive particles of a
 chain and angles between consecutive triples; small deterministic initial velocities.
 """
 import math

@@ -17,7 +17,7 @@
 #include "objective/core/cell_document.hpp"
 #include "objective/core/cell_file_sections.hpp"
 #include "objective/core/text_reader.hpp"
-#include "objective/core/toml_table.hpp"
+#include "common/toml_table.hpp"
 #include "objective/core/uff_parameters.hpp"
 
 #ifndef MESOCHAIN_PARAMS_DIR
@@ -30,7 +30,6 @@
 namespace mesochain::objective {
 
 namespace fs = std::filesystem;
-using detail::TomlTable;
 
 std::string parameterSetsDirectory() { return MESOCHAIN_PARAMS_DIR; }
 
@@ -172,7 +171,7 @@ void readParameters(const TomlTable& root, CellInput& in) {
   if (t->has("max_angular_momentum")) {
     const toml::value& v = t->at("max_angular_momentum");
     if (!v.is_table())
-      t->fail("max_angular_momentum", detail::describe(v),
+      t->fail("max_angular_momentum", describe(v),
               "an inline table such as { C = \"p\", H = \"s\" }");
     const TomlTable m(in.source, v, t->dotted("max_angular_momentum"));
     for (const std::string& el : m.keys()) {
@@ -227,14 +226,14 @@ void readLjElements(const TomlTable& t, CellInput& in) {
   const toml::value& v = t.at("elements");
   const char* shape = "an inline table of the elements of the cell, such as { C = { epsilon = 0.105, "
                       "r0 = 3.851 }, H = { epsilon = 0.044, r0 = 2.886 } } (kcal/mol, Å)";
-  if (!v.is_table()) t.fail("elements", detail::describe(v), shape);
+  if (!v.is_table()) t.fail("elements", describe(v), shape);
   const TomlTable e(in.source, v, t.dotted("elements"));
   const auto& species = in.cell.speciesNames;
   for (const std::string& el : e.keys()) {
     if (std::find(species.begin(), species.end(), el) == species.end())
       e.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
     const toml::value& entry = e.at(el);
-    if (!entry.is_table()) e.fail(el, detail::describe(entry), "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
+    if (!entry.is_table()) e.fail(el, describe(entry), "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
     const TomlTable p(in.source, entry, e.dotted(el));
     p.allowOnly({"epsilon", "r0"});
     const double eps = p.number("epsilon", "a positive well depth (kcal/mol)");
@@ -419,7 +418,7 @@ CellInput readCellDocument(const toml::value& data, const std::string& path) {
   CellInput in;
   in.source = path;
   if (!data.is_table())
-    throw InputError(path, "the document", detail::typeName(data), "a table of the cell-file sections");
+    throw InputError(path, "the document", typeName(data), "a table of the cell-file sections");
   const TomlTable root(path, data, "");
   root.allowOnly({"format", "geometry", "builder", "symmetry", "kpoints", "electrons", "parameters",
                   "dispersion", "scc", "task"});

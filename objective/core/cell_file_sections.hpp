@@ -2,7 +2,7 @@
 // Parts of the cell-file reader (cell_file.cpp): the structure ([geometry] or [builder], and
 // [symmetry]) and [kpoints].
 #include "objective/core/cell_file.hpp"
-#include "objective/core/toml_table.hpp"
+#include "common/toml_table.hpp"
 
 namespace mesochain::objective::detail {
 

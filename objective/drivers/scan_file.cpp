@@ -9,24 +9,23 @@
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
-#include "objective/core/toml_table.hpp"
+#include "common/toml_table.hpp"
 #include "objective/drivers/scan_reference.hpp"
 
 namespace mesochain::objective {
 
 namespace fs = std::filesystem;
-using detail::TomlTable;
 
 namespace {
 
 std::vector<double> numberList(const TomlTable& t, const std::string& key,
                                const std::string& expected) {
   const toml::value& v = t.at(key);
-  if (!v.is_array() || v.as_array().empty()) t.fail(key, detail::describe(v), expected);
+  if (!v.is_array() || v.as_array().empty()) t.fail(key, describe(v), expected);
   std::vector<double> out;
   for (const toml::value& e : v.as_array()) {
-    const auto x = detail::asNumber(e);
-    if (!x || !std::isfinite(*x)) t.fail(key, "an entry " + detail::describe(e), expected);
+    const auto x = asNumber(e);
+    if (!x || !std::isfinite(*x)) t.fail(key, "an entry " + describe(e), expected);
     out.push_back(*x);
   }
   return out;
@@ -101,10 +100,10 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
     s.kind = ScanKind::Bend;
     const char* expected = "a non-empty array of ring rotation orders N_a (integers from 2 to 100000000)";
     const toml::value& v = root.at("rotation_orders");
-    if (!v.is_array() || v.as_array().empty()) root.fail("rotation_orders", detail::describe(v), expected);
+    if (!v.is_array() || v.as_array().empty()) root.fail("rotation_orders", describe(v), expected);
     for (const toml::value& e : v.as_array()) {
       if (!e.is_integer() || e.as_integer() < 2 || e.as_integer() > 100000000L)
-        root.fail("rotation_orders", "an entry " + detail::describe(e), expected);
+        root.fail("rotation_orders", "an entry " + describe(e), expected);
       s.rotationOrders.push_back(static_cast<int>(e.as_integer()));
     }
     const std::string dir = root.has("direction")
@@ -120,7 +119,7 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
       } else if (a.is_integer() && a.as_integer() >= 1 && a.as_integer() <= 1000000000L) {
         s.ringAngular.samples = static_cast<int>(a.as_integer());
       } else {
-        root.fail("ring_angular", detail::describe(a), exp);
+        root.fail("ring_angular", describe(a), exp);
       }
     }
     if (!in.cell.cell.symmetry.isRing() && std::abs(in.cell.cell.symmetry.twist()) > 1e-12)

@@ -1,4 +1,4 @@
-// `mesochain bench network --lammps PREFIX` end to end: the files written for the LAMMPS peer
+// `mesochain-bench network --lammps PREFIX` end to end: the files written for the LAMMPS peer
 // (bench/lammps/in.network) describe the network (atom, bond, angle and molecule counts of 40
 // tubes of 25 elements) and a pair table whose force column is -dU/dr of its energy column
 // (central differences), vanishing at the cut-off, with its well at the tube-tube contact gap.
@@ -45,7 +45,7 @@ std::vector<std::string> sectionLines(const fs::path& file, const std::string& h
 
 TEST(CliNetworkLammps, WritesTheNetworkAndAConsistentPairTable) {
   TempDir dir;
-  const std::string cmd = fmt::format("{} bench network --totals 1000 --lammps {} > {} 2>&1", MESOCHAIN_BINARY,
+  const std::string cmd = fmt::format("{} network --totals 1000 --lammps {} > {} 2>&1", MESOCHAIN_BENCH_BINARY,
                                       (dir.path / "net").string(), (dir.path / "log").string());
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   const fs::path data = dir.path / "net-1000.data", table = dir.path / "net-1000.table";

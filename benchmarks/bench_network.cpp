@@ -1,4 +1,4 @@
-// `mesochain bench network`: element-steps per second of random tube networks with van der
+// `mesochain-bench network`: element-steps per second of random tube networks with van der
 // Waals contacts and dashpots (10^4 and 10^5 elements), on 1 thread and on OpenMP threads, with
 // the shares of time in the neighbour search and in the contact kernels; with --kernel-curve, the
 // accuracy-against-cost curve of the anisotropic contact kernel over the pairs of the network
@@ -15,8 +15,8 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/bench_network_mts.hpp"
-#include "app/commands.hpp"
+#include "benchmarks/bench_network_mts.hpp"
+#include "app/cli/command.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"

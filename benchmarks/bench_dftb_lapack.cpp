@@ -1,4 +1,4 @@
-// The stand-alone LAPACK reference of `mesochain bench dftb`: the time LAPACK's own generalized
+// The stand-alone LAPACK reference of `mesochain-bench dftb`: the time LAPACK's own generalized
 // drivers need for the eigenpairs one evaluation actually uses, on the same matrices H(k), S(k)
 // (assembled here as the band term assembles them), one call per k-point on one thread:
 //   * zhegvd 'V' (all n pairs, divide and conquer) with the blocked workspace, and
@@ -6,7 +6,7 @@
 //     uses, m from the same Fermi filling),
 // the bound being the faster of the two per k-point. Also zpotrf alone: what an SCC iteration
 // saves per k-point by reusing the overlap's Cholesky factor.
-#include "app/bench_dftb_lapack.hpp"
+#include "benchmarks/bench_dftb_lapack.hpp"
 
 #include <algorithm>
 #include <chrono>

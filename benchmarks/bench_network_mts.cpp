@@ -1,4 +1,4 @@
-#include "app/bench_network_mts.hpp"
+#include "benchmarks/bench_network_mts.hpp"
 
 #include <chrono>
 #include <cmath>

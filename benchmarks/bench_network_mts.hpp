@@ -1,5 +1,5 @@
 #pragma once
-// `mesochain bench network --outer-ratios 1,2,4,8`: what multiple time stepping (the ratio of
+// `mesochain-bench network --outer-ratios 1,2,4,8`: what multiple time stepping (the ratio of
 // the contacts' outer step to the bonds' inner step, mdem/stepper.hpp) costs and changes on a
 // network: throughput at each ratio's own time step, and, at one common inner step, the energy
 // error without damping and the trajectory's deviation from the unsplit run

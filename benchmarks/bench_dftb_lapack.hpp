@@ -1,6 +1,6 @@
 #pragma once
 // The time LAPACK alone needs for the eigenpairs one band-structure evaluation uses (see
-// bench_dftb_lapack.cpp), printed by `mesochain bench dftb` beside the total.
+// bench_dftb_lapack.cpp), printed by `mesochain-bench dftb` beside the total.
 #include "dftb/parameters.hpp"
 #include "objective/core/cell.hpp"
 

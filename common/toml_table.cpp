@@ -1,4 +1,4 @@
-#include "objective/core/toml_table.hpp"
+#include "common/toml_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
 
-namespace mesochain::objective::detail {
+namespace mesochain {
 
 std::string typeName(const toml::value& v) {
   switch (v.type()) {
@@ -161,4 +161,4 @@ std::optional<TomlTable> TomlTable::table(const std::string& key) const {
   return TomlTable(source_, v, dotted(key));
 }
 
-}  // namespace mesochain::objective::detail
+}  // namespace mesochain

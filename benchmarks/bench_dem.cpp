@@ -1,8 +1,8 @@
-// `mesochain bench dem`: element-steps per second of bonded filaments (10^4 and 10^5 elements
+// `mesochain-bench dem`: element-steps per second of bonded filaments (10^4 and 10^5 elements
 // in total), on 1 thread and on OpenMP threads.
 //
 // Instructions per element-step: run with a fixed step count under callgrind, e.g.
-//   valgrind --tool=callgrind build/mesochain bench dem --totals 10000 --threads 1 --repeats 1 --steps 20
+//   valgrind --tool=callgrind build/mesochain-bench dem --totals 10000 --threads 1 --repeats 1 --steps 20
 // The measured steps are dumped as their own profile part (callgrind.out.PID.1, from the
 // client requests below: stats zeroed before and dumped after the timed run), so its total Ir
 // divided by the printed element-step count is the cost per element-step without start-up.
@@ -26,7 +26,7 @@
 #define MESOCHAIN_CALLGRIND_END()
 #endif
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::app {

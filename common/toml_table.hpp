@@ -1,13 +1,16 @@
 #pragma once
 // Strict access to one table of a TOML input (toml11 v3): every error is an InputError naming
-// the file, the dotted key and its line, what was found and what was expected.
+// the file, the dotted key and its line, what was found and what was expected. The reader of the
+// cell, scan and skgen formats (objective/core/cell_file*, objective/drivers/scan_file,
+// skgen/skgen_job); the files themselves are read by common/toml_file.hpp. (mdem's scene and
+// model files still have their own reader, mdem/toml_reader.hpp: issue 13 item 3.)
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <toml.hpp>
 
-namespace mesochain::objective::detail {
+namespace mesochain {
 
 class TomlTable {
  public:
@@ -53,4 +56,4 @@ std::optional<double> asNumber(const toml::value& v);
 int lineOf(const toml::value& v);
 std::string lineSuffix(const toml::value& v);
 
-}  // namespace mesochain::objective::detail
+}  // namespace mesochain

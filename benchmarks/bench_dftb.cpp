@@ -1,12 +1,12 @@
 // Benchmarks of the DFTB engine.
-// `mesochain bench dftb`: time per energy+forces evaluation and the share of it spent in the
+// `mesochain-bench dftb`: time per energy+forces evaluation and the share of it spent in the
 // LAPACK eigensolver, for (i) a (10,10) tube as a 2-atom helical cell with 800 kappa points and
 // (ii) the 120-atom translational cell of a (30,30) tube with 20 kappa points; for (ii) also the
 // time LAPACK's own drivers need, stand-alone on the same matrices, for the eigenpairs the
 // evaluation uses (bench_dftb_lapack.cpp) and the share of the total spent in LAPACK.
 // --compare-paths: every case with each eigenvector path forced (eigensolver.hpp), to place
 // the size at which Automatic switches.
-// `mesochain bench kpoints`: error against time of the helical k-point count (accuracy knob),
+// `mesochain-bench kpoints`: error against time of the helical k-point count (accuracy knob),
 // as a table, optionally CSV and a PNG (error vs kappa points and error vs time, log-log).
 #include <algorithm>
 #include <chrono>
@@ -22,9 +22,9 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/bench_dftb_lapack.hpp"
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "benchmarks/bench_dftb_lapack.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/plot/canvas.hpp"
@@ -113,7 +113,7 @@ const char* pathName(dftb::EigenvectorPath p) {
 }
 
 int benchDftb(const std::string& table, int repeats, bool comparePaths) {
-  std::cout << fmt::format("mesochain bench dftb: {} MPI ranks x {} OpenMP threads, {} repeats, table {}\n",
+  std::cout << fmt::format("mesochain-bench dftb: {} MPI ranks x {} OpenMP threads, {} repeats, table {}\n",
                            parallel::Communicator::world().size(), omp_get_max_threads(), repeats,
                            table);
   const double bond = 1.42 * units::kAngstromInBohr;

@@ -1,4 +1,4 @@
-// `mesochain bench ewald`: error against time of the helical Ewald sums over a sweep of
+// `mesochain-bench ewald`: error against time of the helical Ewald sums over a sweep of
 // tolerances (1/r with neutral charges, 1/r^6), and for Lennard-Jones dispersion the plain
 // cutoff sum against the Ewald-summed tail (what does accuracy cost?).
 #include <chrono>
@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "common/plot/canvas.hpp"
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"

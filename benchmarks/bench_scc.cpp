@@ -1,4 +1,4 @@
-// `mesochain bench scc`: SCC iterations and time per iteration on benchmark cells, Broyden
+// `mesochain-bench scc`: SCC iterations and time per iteration on benchmark cells, Broyden
 // against simple mixing, and the objective cell against the same structure written out.
 // Cells: a cyclic C_N H_N ring (N = 60, C-C 1.40 Å, C-H 1.09 Å, slightly puckered so that the
 // charges are not fixed by symmetry alone) as one CH unit + C_60, and as 120 explicit atoms.
@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
@@ -50,7 +50,7 @@ int benchScc(const std::string& params, int repeats) {
       {{"C-C", dir + "C-C.skf"}, {"C-H", dir + "C-H.skf"}, {"H-C", dir + "H-C.skf"},
        {"H-H", dir + "H-H.skf"}},
       "<bench>"));
-  std::cout << fmt::format("mesochain bench scc: {} OpenMP threads, {} repeats, tables {}\n",
+  std::cout << fmt::format("mesochain-bench scc: {} OpenMP threads, {} repeats, tables {}\n",
                            omp_get_max_threads(), repeats, params);
   std::cout << fmt::format("{:<34} {:<8} {:>6} {:>11} {:>12} {:>11} {:>9} {:>16}\n", "cell",
                            "mixer", "iter", "s/iter", "s/eval", "non-SCC s", "ratio",

@@ -1,9 +1,9 @@
 // Calibration scenes of the tube contacts (docs/mdem-contacts.md, "Calibration"):
-//  * `mesochain bench sliding`: two aligned (10,10) tubes, each a closed chain across a box
+//  * `mesochain-bench sliding`: two aligned (10,10) tubes, each a closed chain across a box
 //    periodic along x, one driven at a constant velocity v along the other (held): friction force
 //    per length of the dashpots and of the van der Waals contact against v and gamma, to choose
 //    gamma (F/L = gamma v; the vdW contact adds no friction).
-//  * `mesochain bench zipping`: two tubes crossed at 30, 45, 60 degrees, released, zip into a
+//  * `mesochain-bench zipping`: two tubes crossed at 30, 45, 60 degrees, released, zip into a
 //    bundle: times after which they stay aligned (end-to-end angle below 10 and 3 degrees) and at
 //    rest (kinetic energy below a threshold) against the crossing angle, with and without dashpots and for a
 //    few local damping alphas, to choose alpha; the energy the dashpots dissipate against the rest
@@ -19,7 +19,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "mdem/contacts/dashpot_probe.hpp"

@@ -1,4 +1,4 @@
-// `mesochain bench scan [--csv FILE]`: how a fitted stiffness and its time change with the
+// `mesochain-bench scan [--csv FILE]`: how a fitted stiffness and its time change with the
 // helical k-points and the relaxation tolerance, for small tubes (2-atom helical cells).
 // The stiffness is the curvature of the quadratic through three scan points
 // (E(-h), E(0), E(+h)): C = (E+ + E- - 2 E0) / h^2 per slice of length T0 (N_a helical cells) (stretch, h = 0.5 %)
@@ -15,8 +15,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
-#include "app/default_parameters.hpp"
+#include "app/cli/command.hpp"
+#include "benchmarks/default_parameters.hpp"
 #include "common/atomic_file.hpp"
 #include "common/csv.hpp"
 #include "common/errors.hpp"

@@ -1,4 +1,4 @@
-// `mesochain bench skgen`: accuracy against time of the table generator's two grids, so a user
+// `mesochain-bench skgen`: accuracy against time of the table generator's two grids, so a user
 // can pick them: the two-centre (prolate spheroidal) quadrature and the atomic log grid. Carbon
 // with the pbc-0-3 recipe (Slater basis, PBE); errors against a much finer reference grid.
 #include <chrono>
@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "app/commands.hpp"
+#include "app/cli/command.hpp"
 #include "skgen/element_basis.hpp"
 #include "skgen/two_centre.hpp"
 
