@@ -242,7 +242,7 @@ void printAlignedWindowRows(const mdem::TubePairPotential& potential, const std:
                             double seconds) {
   std::cout << "aligned window (degrees; 8 points): errors as above; interacting pairs on the tables alone / in "
                "the blend ramps / on the rule\n";
-  for (double window : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}) {
+  for (double window : {0.0, 0.25, 0.5, 0.75, 1.0, 1.15}) {
     mdem::AnisotropicVdwKernel k(potential, lb, 8);
     k.enableAlignedPath(la, window);
     const KernelError e = kernelError([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },

@@ -23,7 +23,7 @@ using namespace testing;
 constexpr double kHalf = 0.5 * kSegmentLength;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-// The kernels with the aligned path at the default window (VdwContactSpec::alignedWindowDegrees).
+// The kernels with the aligned path at the window these tests state their bounds for.
 constexpr double kWindow = 0.5;  // degrees
 const AnisotropicVdwKernel& alignedKernel(int points = 8) {
   static const auto make = [](int n) {
