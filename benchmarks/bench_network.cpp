@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -22,6 +23,7 @@
 #include "mdem/contacts/network_generator.hpp"
 #include "mdem/contacts/network_structure.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/checkpoint.hpp"
 #include "mdem/lammps_export.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
@@ -46,6 +48,8 @@ struct NetworkBenchOptions {
   std::vector<int> outerRatios;      // non-empty: the multiple-time-stepping curve and exit
   std::string scene;                 // a scene file instead of the generated networks
   double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
+  std::string relaxedState;          // with relaxNs: the relaxed state's checkpoint, read if present
+  double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -110,10 +114,18 @@ std::string contactSummary(const mdem::Simulation& sim) {
 
 // The bundled case: the scene relaxed for `ns` with local damping (alpha of the scene, added when
 // not named), its final positions, orientations and velocities taken as the new start.
-mdem::Scene relaxedScene(mdem::Scene s, double ns) {
+// With `statePath`, a checkpoint of that relaxed state is read when the file exists (the same scene
+// and time: callgrind need not relax) and written otherwise.
+mdem::Scene relaxedScene(mdem::Scene s, double ns, const std::string& statePath) {
   if (std::find(s.effects.begin(), s.effects.end(), "local_damping") == s.effects.end())
     s.effects.push_back("local_damping");
   mdem::Simulation sim(s);
+  if (!statePath.empty() && std::filesystem::exists(statePath)) {
+    mdem::CheckpointFile(statePath, s).restore(sim);
+    std::cout << fmt::format("relaxed state read from {} (t = {:.4g} ns): {}\n", statePath, sim.time(), contactSummary(sim));
+    s.bodies = sim.state().bodies;
+    return s;
+  }
   const long steps = std::max(1L, std::lround(ns / sim.timeStep()));
   std::cout << fmt::format("relaxing {} elements for {:.4g} ns ({} steps of {:.4g} ns, local damping {:.3g})\n  before: {}\n",
                            s.bodies.size(), ns, steps, sim.timeStep(), s.localDampingAlpha, contactSummary(sim))
@@ -128,6 +140,7 @@ mdem::Scene relaxedScene(mdem::Scene s, double ns) {
               << std::flush;
   }
   std::cout << "  after:  " << contactSummary(sim) << "\n";
+  if (!statePath.empty()) mdem::writeCheckpoint(statePath, s, sim, [](mdem::BinaryWriter&) {}, [](mdem::BinaryWriter&) {});
   s.bodies = sim.state().bodies;
   return s;
 }
@@ -222,8 +235,39 @@ KernelError kernelError(const Kernel& kernel, const std::vector<SegmentPair>& pa
   return e;
 }
 
+// The aligned path (vdw_contact.hpp, enableAlignedPath) against its window, 8 Gauss points: the
+// errors, the cost and where the interacting pairs fall (weight 1: tables only; ramp: both; rule).
+void printAlignedWindowRows(const mdem::TubePairPotential& potential, const std::vector<SegmentPair>& pairs,
+                            const std::vector<mdem::ContactPairResult>& ref, double scale, double la, double lb,
+                            double seconds) {
+  std::cout << "aligned window (degrees; 8 points): errors as above; interacting pairs on the tables alone / in "
+               "the blend ramps / on the rule\n";
+  for (double window : {0.0, 0.25, 0.5, 0.75, 1.0, 1.15}) {
+    mdem::AnisotropicVdwKernel k(potential, lb, 8);
+    k.enableAlignedPath(la, window);
+    const KernelError e = kernelError([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
+                                      pairs, ref, scale, seconds);
+    long tables = 0, ramp = 0, rule = 0;
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      if (ref[p].energy == 0.0) continue;
+      const double w = k.aligned ? mdem::alignedWeight(k, pairs[p].first, pairs[p].second) : 0.0;
+      (w == 1.0 ? tables : w > 0.0 ? ramp : rule) += 1;
+    }
+    std::cout << fmt::format("aligned {:4.1f}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}   {} / {} / {}\n", window, e.energyMax,
+                             e.energySum, e.forceMax, e.nsPerPair, tables, ramp, rule)
+              << std::flush;
+  }
+}
+
+// The scene of the kernel curve: the generated network, or --scene (relaxed with --relax-ns).
+mdem::Scene curveScene(const NetworkBenchOptions& o) {
+  if (o.scene.empty()) return networkScene(o.totals.front(), o.tubeLength, false);
+  mdem::Scene s = mdem::loadScene(o.scene);
+  return o.relaxNs > 0.0 ? relaxedScene(std::move(s), o.relaxNs, o.relaxedState) : s;
+}
+
 int printKernelCurve(const NetworkBenchOptions& o) {
-  const mdem::Scene s = networkScene(o.totals.front(), o.tubeLength, false);
+  const mdem::Scene s = curveScene(o);
   const std::vector<SegmentPair> pairs = networkPairs(s);
   mdem::TubePairSpec ps;
   ps.lj = s.contacts.vdw.lj, ps.radiusA = ps.radiusB = s.elementTypes[0].radius;
@@ -239,12 +283,15 @@ int printKernelCurve(const NetworkBenchOptions& o) {
     if (o.kernelPath == "line") {
       sum = evaluatePairs(line(mdem::gaussLegendre(o.kernelPoints)), pairs, o.kernelRepeat, &out);
     } else {
-      const mdem::AnisotropicVdwKernel k(potential, lb, o.kernelPoints);
+      mdem::AnisotropicVdwKernel k(potential, lb, o.kernelPoints);
+      if (o.alignedWindow > 0.0) k.enableAlignedPath(la, o.alignedWindow);
       sum = evaluatePairs([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
                           pairs, o.kernelRepeat, &out);
     }
-    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points: energy sum {:.10g} zJ\n", pairs.size(),
-                             o.kernelRepeat, o.kernelPath, o.kernelPoints, sum / o.kernelRepeat);
+    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points, aligned window {} degrees: energy sum "
+                             "{:.10g} zJ\n",
+                             pairs.size(), o.kernelRepeat, o.kernelPath, o.kernelPoints, std::max(0.0, o.alignedWindow),
+                             sum / o.kernelRepeat);
     return 0;
   }
   const double scale = std::abs(potential.wellDepthPerLength()) * 2.0 * la;
@@ -284,6 +331,7 @@ int printKernelCurve(const NetworkBenchOptions& o) {
                              e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
               << std::flush;
   }
+  printAlignedWindowRows(potential, pairs, ref, scale, la, lb, per);
   for (double tol : {3e-2, 1e-2, 3e-3, 1e-3, 1e-4}) {
     const mdem::QuadratureChoice c = mdem::quadraturePointsForTolerance(potential, la, lb, tol);
     const mdem::AnisotropicVdwKernel k(potential, lb, c.points);
@@ -328,6 +376,12 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--relax-ns", opt->relaxNs,
                        "relax the network or scene for this long first (local damping; the bundled case), then measure")
         ->check(CLI::PositiveNumber);
+    (*sub)->add_option("--relaxed-state", opt->relaxedState,
+                       "with --relax-ns: checkpoint of the relaxed state, read when it exists, else written");
+    (*sub)->add_option("--aligned-window", opt->alignedWindow,
+                       "[vdw_contact] aligned_window_deg of the measured runs (after any relaxation); with "
+                       "--kernel-points: the aligned path's window")
+        ->check(CLI::Range(0.0, 10.0));
     (*sub)->add_option("--kernel-path", opt->kernelPath, "with --kernel-points: table (D, one lookup) or line (H, three)")
         ->check(CLI::IsMember({"table", "line"}));
   };
@@ -337,7 +391,7 @@ Command makeBenchNetworkCommand() {
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =
           opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);
-      if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs);
+      if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       return printOuterRatioCurve(s, opt->outerRatios, opt->seconds, opt->threads);
     }
     if (!opt->lammps.empty()) {
@@ -356,7 +410,9 @@ Command makeBenchNetworkCommand() {
     else
       for (int total : opt->totals) scenes.push_back(networkScene(total, opt->tubeLength, opt->isotropic));
     if (opt->relaxNs > 0.0)
-      for (mdem::Scene& s : scenes) s = relaxedScene(std::move(s), opt->relaxNs);
+      for (mdem::Scene& s : scenes) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
+    if (opt->alignedWindow >= 0.0)
+      for (mdem::Scene& s : scenes) s.contacts.vdw.alignedWindowDegrees = opt->alignedWindow;
     std::cout << "elements  tubes  pairs     threads  element-steps/s  neighbour-search  vdw-contact (items + gather, first thread)\n";
     for (const mdem::Scene& s : scenes) {
       // Tubes: elements minus bonds for chains (a filament of n elements has n - 1 bonds).

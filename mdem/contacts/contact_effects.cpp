@@ -154,6 +154,7 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
               spec_.quadratureTolerance > 0.0
                   ? std::make_unique<AnisotropicVdwKernel>(*tp.potential, la, lb, spec_.quadratureTolerance)
                   : std::make_unique<AnisotropicVdwKernel>(*tp.potential, lb, spec_.quadraturePoints);
+          tp.kernelAgainst[partner]->enableAlignedPath(la, spec_.alignedWindowDegrees);
         }
       }
     }

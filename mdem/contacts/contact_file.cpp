@@ -37,6 +37,7 @@ void validateContactSpec(const Scene& s) {
     if (v.quadratureTolerance != 0.0)
       requireRange(s, "vdw_contact.quadrature_tolerance", v.quadratureTolerance, 1e-4, 0.1,
                    "(fraction of the contact energy scale)");
+    requireRange(s, "vdw_contact.aligned_window_deg", v.alignedWindowDegrees, 0.0, 10.0, "degrees");
     requireRange(s, "vdw_contact.layer_spacing_nm", v.layerSpacing, 0.0, 2.0, "nm");
     requireRange(s, "vdw_contact.edge_width_nm", v.edgeWidth, 0.05, 5.0, "nm");
   }
@@ -118,8 +119,8 @@ void readContactTables(const TomlTable& root, Scene& s) {
   if (root.has("vdw_contact")) {
     const TomlTable t = root.table("vdw_contact");
     t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
-                 "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "layer_spacing_nm",
-                 "edge_width_nm"});
+                 "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg",
+                 "layer_spacing_nm", "edge_width_nm"});
     VdwContactSpec& v = s.contacts.vdw;
     const std::string form = t.string("form", "anisotropic");
     if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
@@ -138,6 +139,7 @@ void readContactTables(const TomlTable& root, Scene& s) {
       if (!(v.quadratureTolerance > 0.0))
         t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
     }
+    v.alignedWindowDegrees = t.number("aligned_window_deg", v.alignedWindowDegrees);
     v.layerSpacing = t.number("layer_spacing_nm", v.layerSpacing);
     v.edgeWidth = t.number("edge_width_nm", v.edgeWidth);
   }

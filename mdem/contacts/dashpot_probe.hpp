@@ -1,5 +1,5 @@
 #pragma once
-// Where and how fast the contact dashpots act (`mesochain bench zipping`, docs/mdem-contacts.md
+// Where and how fast the contact dashpots act (`mesochain-bench zipping`, docs/mdem-contacts.md
 // "Why the zipping time hardly depends on gamma"). The element pairs of different filaments are
 // sorted by the wall gap of their axis segments (contact_dashpot.hpp: wallGap) into the bands of
 // the two contact effects:

@@ -23,6 +23,7 @@
 //
 // Units: nm, zJ (mdem/units.hpp).
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 namespace mesochain::mdem {
@@ -48,6 +49,15 @@ double ljLineIntegral(const LennardJones& lj, double h, double* derivative = nul
 // derivative. `ringPoints` points per ring.
 double parallelTubeEnergyPerLength(const LennardJones& lj, double r1, double r2, double d,
                                    double* derivative = nullptr, int ringPoints = 96);
+
+// Two doubles operated on together (GCC/Clang vector extension: SSE2 on x86-64, scalar code
+// elsewhere); loaded from two adjacent doubles.
+using Lanes = double __attribute__((vector_size(16)));
+inline Lanes lanes(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 
 // C1 bicubic Hermite table on a uniform grid x = x0 + i dx, y = y0 + j dy.
 class BicubicTable {
@@ -76,27 +86,33 @@ inline double BicubicTable::eval(double x, double y, double* fx, double* fy) con
   t = std::clamp(t, 0.0, tLast_), s = std::clamp(s, 0.0, sLast_);
   const int i = std::min(static_cast<int>(t), nx_ - 2), j = std::min(static_cast<int>(s), ny_ - 2);
   t -= i, s -= j;
-  // Cubic Hermite basis: 0 = value at 0, 1 = value at 1, 2 = slope at 0, 3 = slope at 1.
-  const double t2 = t * t, s2 = s * s, t3 = t2 * t, s3 = s2 * s;
-  const double b1t = 3 * t2 - 2 * t3, b2t = t3 - 2 * t2 + t, b3t = t3 - t2, b0t = 1 - b1t;
-  const double d1t = 6 * (t - t2), d2t = 3 * t2 - 4 * t + 1, d3t = 3 * t2 - 2 * t;
-  const double b1s = 3 * s2 - 2 * s3, b2s = s3 - 2 * s2 + s, b3s = s3 - s2, b0s = 1 - b1s;
-  const double d1s = 6 * (s - s2), d2s = 3 * s2 - 4 * s + 1, d3s = 3 * s2 - 2 * s;
+  // Cubic Hermite basis: 0 = value at 0, 1 = value at 1, 2 = slope at 0, 3 = slope at 1; lanes
+  // (t, s), i.e. the x and y directions together.
+  const Lanes ts{t, s}, ts2 = ts * ts, ts3 = ts2 * ts;
+  const Lanes b1 = 3.0 * ts2 - 2.0 * ts3, b2 = ts3 - 2.0 * ts2 + ts, b3 = ts3 - ts2, b0 = 1.0 - b1;
+  const Lanes d1 = 6.0 * (ts - ts2), d2 = 3.0 * ts2 - 4.0 * ts + 1.0, d3 = 3.0 * ts2 - 2.0 * ts;
+  const double b0t = b0[0], b1t = b1[0], b2t = b2[0], b3t = b3[0], d1t = d1[0], d2t = d2[0], d3t = d3[0];
+  const double b0s = b0[1], b1s = b1[1], b2s = b2[1], b3s = b3[1], d1s = d1[1], d2s = d2[1], d3s = d3[1];
   // Along y on the two rows i, i+1 (nodes j, j+1 are adjacent in memory): the value part (f, fy)
-  // and the x-slope part (fx, fxy), each with its y-derivative.
+  // and the x-slope part (fx, fxy), each with its y-derivative. Two lanes at once: a node's
+  // (f, fx dx) and (fy dy, fxy dx dy) are adjacent, so lane 0 carries the value part and lane 1
+  // the x-slope part through the same operations in the same order as the scalar sums
+  // vp = p0 b0s + p4 b1s + p2 b2s + p6 b3s, xp = p1 b0s + ... (the results are those of the scalar
+  // form bit for bit; the build has no FMA contraction).
   const double* p = &data_[4 * (i * ny_ + j)];
   const double* q = p + 4 * ny_;
-  const double vp = p[0] * b0s + p[4] * b1s + p[2] * b2s + p[6] * b3s;
-  const double xp = p[1] * b0s + p[5] * b1s + p[3] * b2s + p[7] * b3s;
-  const double vq = q[0] * b0s + q[4] * b1s + q[2] * b2s + q[6] * b3s;
-  const double xq = q[1] * b0s + q[5] * b1s + q[3] * b2s + q[7] * b3s;
-  const double vpS = (p[4] - p[0]) * d1s + p[2] * d2s + p[6] * d3s;
-  const double xpS = (p[5] - p[1]) * d1s + p[3] * d2s + p[7] * d3s;
-  const double vqS = (q[4] - q[0]) * d1s + q[2] * d2s + q[6] * d3s;
-  const double xqS = (q[5] - q[1]) * d1s + q[3] * d2s + q[7] * d3s;
-  *fx = ((vq - vp) * d1t + xp * d2t + xq * d3t) * invDx_;
-  *fy = (vpS * b0t + vqS * b1t + xpS * b2t + xqS * b3t) * invDy_;
-  return vp * b0t + vq * b1t + xp * b2t + xq * b3t;
+  const Lanes p01 = lanes(p), p23 = lanes(p + 2), p45 = lanes(p + 4), p67 = lanes(p + 6);
+  const Lanes q01 = lanes(q), q23 = lanes(q + 2), q45 = lanes(q + 4), q67 = lanes(q + 6);
+  const Lanes vxp = p01 * b0s + p45 * b1s + p23 * b2s + p67 * b3s;      // (vp, xp)
+  const Lanes vxq = q01 * b0s + q45 * b1s + q23 * b2s + q67 * b3s;      // (vq, xq)
+  const Lanes vxpS = (p45 - p01) * d1s + p23 * d2s + p67 * d3s;         // (vpS, xpS)
+  const Lanes vxqS = (q45 - q01) * d1s + q23 * d2s + q67 * d3s;         // (vqS, xqS)
+  *fx = ((vxq[0] - vxp[0]) * d1t + vxp[1] * d2t + vxq[1] * d3t) * invDx_;
+  // (value, fy): lane 0 = vp b0t + vq b1t + xp b2t + xq b3t, lane 1 the same of the y-derivatives.
+  const Lanes v = Lanes{vxp[0], vxpS[0]} * b0t + Lanes{vxq[0], vxqS[0]} * b1t + Lanes{vxp[1], vxpS[1]} * b2t +
+                  Lanes{vxq[1], vxqS[1]} * b3t;
+  *fy = v[1] * invDy_;
+  return v[0];
 }
 
 // The coarse-grained interaction of one pair of tube kinds (steps 1-4), built once.

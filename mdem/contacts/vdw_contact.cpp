@@ -86,6 +86,62 @@ ContactPairResult tableQuadrature(const SegmentLineTable& table, const Quadratur
                              return d;
                            });
 }
+// Weight 1 at v <= full, 0 at v >= zero: the quintic smoothstep (C2), and dweight/dv.
+double ramp(double v, double full, double zero, double* derivative) {
+  *derivative = 0.0;
+  if (v <= full) return 1.0;
+  if (v >= zero) return 0.0;
+  const double t = (v - full) / (zero - full), t2 = t * t;
+  *derivative = -30.0 * t2 * (1.0 - t) * (1.0 - t) / (zero - full);
+  return 1.0 - t2 * t * (10.0 - 15.0 * t + 6.0 * t2);
+}
+
+// E = w E_aligned + (1 - w) E_rule with w = w(sin^2 theta) (AlignedWindow). Both energies are
+// functions of the invariants rr = |r0|^2, e = t_a.r0, f = t_b.r0, c = t_a.t_b (the rule's through its
+// own vector gradient), so the expansion's partials and the weight's are carried as
+// dE/d(rr, e, f, c) and turned into forces and torques once:
+//   dE/dr0 = 2 E_rr r0 + E_e t_a + E_f t_b,  dE/dt_a = E_e r0 + E_c t_b,  dE/dt_b = E_f r0 + E_c t_a.
+// The tables vanish where the segments turned parallel would be farther apart than the early-out
+// distance less la theta (enableAlignedPath), so a pair outside the neighbour list's reach gets
+// exactly zero from both paths; and exactly parallel pairs all use the tables, whose sum along a
+// straight chain is constant (no corrugation, as for the rule).
+double angleWeight(const AnisotropicVdwKernel::AlignedWindow& win, double sine2, double* derivative) {
+  return sine2 >= win.sine2Zero ? (*derivative = 0.0) : ramp(sine2, win.sine2Full, win.sine2Zero, derivative);
+}
+
+ContactPairResult alignedBlend(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b, double farCutDistance) {
+  const Vec3 &ta = a.axis, &tb = b.axis;
+  const double c = ta.dot(tb), sine2 = 1.0 - c * c;
+  double dwAngle;
+  const double w = angleWeight(k.window, sine2, &dwAngle);
+  if (w == 0.0) return tableQuadrature(k.table, k.rule, farCutDistance, a, b);
+  const Vec3 r0 = a.centre - b.centre;
+  const double f = tb.dot(r0);
+  // The expansion's arguments (aligned_pair_table.hpp) and its partials by the invariants:
+  // hA = rr - f^2, hB = 2 (e - f c), hC = 1 - c^2, Delta = sigma f, eps = sigma c - 1.
+  const double sigma = c < 0.0 ? -1.0 : 1.0, e = ta.dot(r0), h0 = std::max((r0 - f * tb).norm(), 1e-12);
+  const double hB = 2.0 * (e - f * c);
+  const AlignedEnergy x = k.aligned->evaluate(h0, sigma * f, hB, sine2, sigma * c - 1.0);
+  const double eHA = 0.5 * x.dH0 / h0;
+  double gRR = eHA, gE = 2.0 * x.dHB, gF = -2.0 * f * eHA - 2.0 * c * x.dHB + sigma * x.dDelta;
+  double gC = -2.0 * f * x.dHB - 2.0 * c * x.dHC + sigma * x.dEps;
+  ContactPairResult r;
+  r.energy = x.energy;
+  if (w < 1.0) {
+    const ContactPairResult q = tableQuadrature(k.table, k.rule, farCutDistance, a, b);
+    const double gap = x.energy - q.energy, v = 1.0 - w;
+    gRR *= w, gE *= w, gF *= w;
+    gC = w * gC + gap * dwAngle * (-2.0 * c);  // d sin^2/d c = -2c
+    r.energy = w * x.energy + v * q.energy;
+    r.forceA = v * q.forceA, r.forceB = v * q.forceB, r.torqueA = v * q.torqueA, r.torqueB = v * q.torqueB;
+  }
+  const Vec3 gradR = 2.0 * gRR * r0 + gE * ta + gF * tb;
+  r.forceA -= gradR;
+  r.forceB += gradR;
+  r.torqueA -= gE * ta.cross(r0) + gC * ta.cross(tb);
+  r.torqueB -= gF * tb.cross(r0) + gC * tb.cross(ta);
+  return r;
+}
 }  // namespace
 
 ContactPairResult anisotropicVdw(const TubePairPotential& potential, const QuadratureRule& rule,
@@ -105,7 +161,31 @@ AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double ha
 
 ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b) {
   if (b.halfLength != k.table.halfLength()) return anisotropicVdw(*k.potential, k.rule, a, b);
+  if (k.aligned && a.halfLength == k.aligned->halfLengthA()) return alignedBlend(k, a, b, farCut(*k.potential));
   return tableQuadrature(k.table, k.rule, farCut(*k.potential), a, b);
+}
+
+double alignedWeight(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b) {
+  if (!k.aligned || a.halfLength != k.aligned->halfLengthA() || b.halfLength != k.table.halfLength()) return 0.0;
+  const double c = a.axis.dot(b.axis);
+  double derivative;
+  return angleWeight(k.window, 1.0 - c * c, &derivative);
+}
+
+void AnisotropicVdwKernel::enableAlignedPath(double la, double windowDegrees) {
+  aligned.reset();
+  if (windowDegrees <= 0.0) return;
+  // At most the angle with la theta = 0.02 nm (1.15 degrees for 2-nm elements): beyond, the
+  // expansion is far less accurate than the rule anyway (docs/mdem-contacts.md).
+  const double theta = std::min(windowDegrees * 3.14159265358979323846 / 180.0, 0.02 / la);
+  window.sine2Zero = std::sin(theta) * std::sin(theta);
+  window.sine2Full = std::sin(0.5 * theta) * std::sin(0.5 * theta);
+  // Turning a parallel to b about its centre moves its points by at most la theta: a pair whose
+  // segments are beyond the early-out distance (and may be left out of the neighbour list) is
+  // turned no closer than farCut - la theta, and the tables vanish beyond that less one cell
+  // diagonal.
+  const double step = table.step();
+  aligned = std::make_shared<const AlignedPairTable>(table, la, farCut(*potential) - la * theta - std::sqrt(2.0) * step);
 }
 
 AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double halfLengthA, double halfLengthB,

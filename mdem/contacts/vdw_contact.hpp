@@ -21,8 +21,10 @@
 //
 // Forces and torques are the exact negative gradients of these energies (world frame; a torque
 // is -dE/dphi for a rotation q -> exp(phi) q of the element).
+#include <memory>
 #include <vector>
 
+#include "mdem/contacts/aligned_pair_table.hpp"
 #include "mdem/contacts/quadrature.hpp"
 #include "mdem/contacts/segment_line_table.hpp"
 #include "mdem/contacts/tube_potential.hpp"
@@ -64,7 +66,22 @@ struct AnisotropicVdwKernel {
   SegmentLineTable table;
   QuadratureRule rule;
   double sampledError = 0.0;  // with a tolerance: the chosen rule's worst sampled error
+
+  // Nearly parallel pairs (aligned_pair_table.hpp, docs/mdem-contacts.md "Nearly parallel pairs"):
+  // for quadrature elements of half-length la, pairs within `windowDegrees` of parallel use the
+  // tilt expansion of the parallel tables, blended smoothly with the rule in the angle (weight 1
+  // below half the window, 0 beyond it; forces and torques include the weight's gradient). The
+  // window is narrowed to la window <= 0.02 nm (1.15 degrees for 2-nm elements). 0 switches it off.
+  void enableAlignedPath(double halfLengthA, double windowDegrees);
+  struct AlignedWindow {
+    double sine2Full = 0.0, sine2Zero = 0.0;  // sin^2 of the angle: weight 1 below, 0 above
+  };
+  AlignedWindow window;
+  std::shared_ptr<const AlignedPairTable> aligned;  // null: off
 };
+
+// The aligned path's weight of a pair: 1 on the tables alone, 0 on the rule alone (and when off).
+double alignedWeight(const AnisotropicVdwKernel& kernel, const Segment& a, const Segment& b);
 
 // The same energy as the kernel above with the same rule (to round-off when lb is a whole number
 // of table steps); a b of another half-length than the kernel's table falls back to it.
