@@ -1,5 +1,5 @@
 #pragma once
-// The LAPACK / BLAS routines of the eigensolver, declared once, and one overload set per scalar
+// The LAPACK / BLAS routines of the eigensolver and the density matrices, declared once, and one overload set per scalar
 // type (double: real symmetric, std::complex<double>: Hermitian) so that the solver is written
 // once. Character arguments carry gfortran's hidden length arguments (trailing size_t).
 // Routine documentation: LAPACK Users' Guide, 3rd ed. (Anderson et al., SIAM 1999) and the
@@ -50,6 +50,11 @@ void ztrsm_(const char* side, const char* uplo, const char* transa, const char* 
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag,
             const int* m, const int* n, const double* alpha, const double* a, const int* lda,
             double* b, const int* ldb, flen, flen, flen, flen);
+void zherk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
+            const cd* a, const int* lda, const double* beta, cd* c, const int* ldc, flen, flen);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* beta, double* c, const int* ldc, flen,
+            flen);
 }
 
 // ---- Overloads by scalar type ------------------------------------------------------------
@@ -143,6 +148,15 @@ inline void trsm(bool lowerAdjoint, int n, int m, const double* a, double* b) {
   const double one = 1.0;
   dtrsm_("L", lowerAdjoint ? "L" : "U", lowerAdjoint ? "T" : "N", "N", &n, &m, &one, a, &n, b,
          &n, 1, 1, 1, 1);
+}
+
+// C (n x n, lower triangle) <- alpha A A^H + beta C for A n x k (leading dimension n): the
+// Hermitian (real: symmetric) rank-k update.
+inline void herk(int n, int k, double alpha, const cd* a, double beta, cd* c) {
+  zherk_("L", "N", &n, &k, &alpha, a, &n, &beta, c, &n, 1, 1);
+}
+inline void herk(int n, int k, double alpha, const double* a, double beta, double* c) {
+  dsyrk_("L", "N", &n, &k, &alpha, a, &n, &beta, c, &n, 1, 1);
 }
 
 // ---- Workspace queries (LWORK = -1): the optimal length the implementation asks for -----
