@@ -45,7 +45,8 @@ struct ThreadWork {
   ReducedProblem<std::complex<double>> hk;  // H(k) when nothing is kept per k-point
   ReducedProblem<double> hr;
   ComplexMatrix sk, c;  // c: eigenvectors of the occupied states (OccupiedOnly)
-  ComplexMatrix rho, rhoE;  // one k-point's density matrices (density_matrix.hpp)
+  ComplexMatrix y, rho, rhoE;  // one k-point's Y = X diag(e) and density matrices
+                               // (density_matrix.hpp; viewed as real at a real k-point)
   Eigen::MatrixXd sr, cr;
   GeneralizedEigensolver solver;
   std::vector<OrbitalBlock> p, w;  // one k-point's contribution
@@ -139,6 +140,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       w.sr.resize(n, n);
     }
     if (density) {
+      w.y.resize(n, n);
       w.rho.resize(n, n);
       w.rhoE.resize(n, n);
       if (subset) {
@@ -228,6 +230,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   // Pass 2: the eigenvectors of the states that carry charge (OccupiedOnly), then the density
   // and energy-weighted density folded onto the image pairs.
   sol.statesUsed.assign(nk, 0);
+  const DensityBlockPlan plan(geo.layout, geo.images);
   {
     BlasThreadsOff blasOff;
 #pragma omp parallel for num_threads(nThreads) schedule(dynamic)
@@ -249,10 +252,12 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
           b = Clock::now();
           MatrixMap<double> rho(reinterpret_cast<double*>(w.rho.data()), n, n);
           MatrixMap<double> rhoE(reinterpret_cast<double*>(w.rhoE.data()), n, n);
-          formDensityMatrices<double>(MatrixMap<double>(c.data(), n, m), m, f, e, rho, rhoE);
+          formDensityMatrices<double>(plan, MatrixMap<double>(c.data(), n, m),
+                                      MatrixMap<double>(reinterpret_cast<double*>(w.y.data()), n, m),
+                                      m, f, e, rho, rhoE);
           d = Clock::now();
-          foldDensityBlocks<double>(geo.layout, geo.images, geo.grid, kpts[k], sol.weights[k],
-                                    rho, rhoE, w.p, w.w);
+          foldDensityBlocks<double>(plan, geo.layout, geo.images, geo.grid, kpts[k],
+                                    sol.weights[k], rho, rhoE, w.p, w.w);
           w.onsite.noalias() = sol.weights[k] * rho.diagonal();
         } else {
           if (subset) w.solver.lowestVectors(keptComplex[k], m, w.c, "band structure");
@@ -260,9 +265,10 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
           b = Clock::now();
           MatrixMap<std::complex<double>> rho(w.rho.data(), n, n), rhoE(w.rhoE.data(), n, n);
           formDensityMatrices<std::complex<double>>(
-              MatrixMap<std::complex<double>>(c.data(), n, m), m, f, e, rho, rhoE);
+              plan, MatrixMap<std::complex<double>>(c.data(), n, m),
+              MatrixMap<std::complex<double>>(w.y.data(), n, m), m, f, e, rho, rhoE);
           d = Clock::now();
-          foldDensityBlocks<std::complex<double>>(geo.layout, geo.images, geo.grid, kpts[k],
+          foldDensityBlocks<std::complex<double>>(plan, geo.layout, geo.images, geo.grid, kpts[k],
                                                   sol.weights[k], rho, rhoE, w.p, w.w);
           w.onsite.noalias() = sol.weights[k] * rho.diagonal().real();
         }

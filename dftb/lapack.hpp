@@ -50,11 +50,12 @@ void ztrsm_(const char* side, const char* uplo, const char* transa, const char* 
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag,
             const int* m, const int* n, const double* alpha, const double* a, const int* lda,
             double* b, const int* ldb, flen, flen, flen, flen);
-void zherk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
-            const cd* a, const int* lda, const double* beta, cd* c, const int* ldc, flen, flen);
-void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
-            const double* a, const int* lda, const double* beta, double* c, const int* ldc, flen,
-            flen);
+void zgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+            const cd* alpha, const cd* a, const int* lda, const cd* b, const int* ldb,
+            const cd* beta, cd* c, const int* ldc, flen, flen);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+            const double* alpha, const double* a, const int* lda, const double* b,
+            const int* ldb, const double* beta, double* c, const int* ldc, flen, flen);
 }
 
 // ---- Overloads by scalar type ------------------------------------------------------------
@@ -150,13 +151,15 @@ inline void trsm(bool lowerAdjoint, int n, int m, const double* a, double* b) {
          &n, 1, 1, 1, 1);
 }
 
-// C (n x n, lower triangle) <- alpha A A^H + beta C for A n x k (leading dimension n): the
-// Hermitian (real: symmetric) rank-k update.
-inline void herk(int n, int k, double alpha, const cd* a, double beta, cd* c) {
-  zherk_("L", "N", &n, &k, &alpha, a, &n, &beta, c, &n, 1, 1);
+// C (rows x cols) <- A B^H for A rows x k, B cols x k; all three with leading dimension ld.
+inline void gemmAdjoint(int rows, int cols, int k, const cd* a, const cd* b, cd* c, int ld) {
+  const cd one = 1.0, zero = 0.0;
+  zgemm_("N", "C", &rows, &cols, &k, &one, a, &ld, b, &ld, &zero, c, &ld, 1, 1);
 }
-inline void herk(int n, int k, double alpha, const double* a, double beta, double* c) {
-  dsyrk_("L", "N", &n, &k, &alpha, a, &n, &beta, c, &n, 1, 1);
+inline void gemmAdjoint(int rows, int cols, int k, const double* a, const double* b, double* c,
+                        int ld) {
+  const double one = 1.0, zero = 0.0;
+  dgemm_("N", "T", &rows, &cols, &k, &one, a, &ld, b, &ld, &zero, c, &ld, 1, 1);
 }
 
 // ---- Workspace queries (LWORK = -1): the optimal length the implementation asks for -----
