@@ -244,7 +244,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
         sol.statesUsed[k] = m;
         const auto a = Clock::now();
         Clock::time_point b, d;  // vectors | BLAS-3 products | folding and exact sums
-        // The occupied columns (scaled in place below: nothing reads them afterwards), and
+        // The occupied columns (scaled in place into X: nothing reads them afterwards), and Y,
         // rho, rho^E in the thread's buffers (viewed as real ones at a real k-point).
         if (kpts[k].realPhases) {
           if (subset) w.solver.lowestVectors(keptReal[k], m, w.cr, "band structure (real k-point)");
@@ -252,9 +252,9 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
           b = Clock::now();
           MatrixMap<double> rho(reinterpret_cast<double*>(w.rho.data()), n, n);
           MatrixMap<double> rhoE(reinterpret_cast<double*>(w.rhoE.data()), n, n);
-          formDensityMatrices<double>(plan, MatrixMap<double>(c.data(), n, m),
-                                      MatrixMap<double>(reinterpret_cast<double*>(w.y.data()), n, m),
-                                      m, f, e, rho, rhoE);
+          MatrixMap<double> y(reinterpret_cast<double*>(w.y.data()), n, m);
+          formDensityMatrices<double>(plan, MatrixMap<double>(c.data(), n, m), y, m, f, e, rho,
+                                      rhoE);
           d = Clock::now();
           foldDensityBlocks<double>(plan, geo.layout, geo.images, geo.grid, kpts[k],
                                     sol.weights[k], rho, rhoE, w.p, w.w);

@@ -25,7 +25,8 @@ DensityBlockPlan::DensityBlockPlan(const OrbitalLayout& layout, const objective:
   groupStart.push_back(layout.total);
   groupOfOrbital.resize(layout.total);
   for (int g = 0; g < groups; ++g)
-    std::fill(groupOfOrbital.begin() + groupStart[g], groupOfOrbital.begin() + groupStart[g + 1], g);
+    std::fill(groupOfOrbital.begin() + groupStart[g], groupOfOrbital.begin() + groupStart[g + 1],
+              g);
   std::vector<char> needed(static_cast<std::size_t>(groups) * groups, 0);
   for (int g = 0; g < groups; ++g) needed[g * groups + g] = 1;
   for (const objective::ImagePair& pair : images.pairs()) {
@@ -59,8 +60,9 @@ void formDensityMatrices(const DensityBlockPlan& plan, MatrixMap<Scalar> c, Matr
       rhoE.block(r0, c0, nr, nc).setZero();
       continue;
     }
-    lapack::gemmAdjoint(nr, nc, m, c.data() + r0, c.data() + c0, rho.data() + r0 + long(c0) * n, n);
-    lapack::gemmAdjoint(nr, nc, m, y.data() + r0, c.data() + c0, rhoE.data() + r0 + long(c0) * n, n);
+    const long at = r0 + long(c0) * n;  // the block's first element
+    lapack::gemmAdjoint(nr, nc, m, c.data() + r0, c.data() + c0, rho.data() + at, n);
+    lapack::gemmAdjoint(nr, nc, m, y.data() + r0, c.data() + c0, rhoE.data() + at, n);
   }
 }
 

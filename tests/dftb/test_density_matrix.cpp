@@ -77,14 +77,14 @@ TEST(DensityMatrices, BlockProductsEqualTheDefinitionWithLevelsOfBothSigns) {
 TEST(DensityMatrices, CutInsideAnExactlyDegenerateLevelNeverSplitsIt) {
   // A metallic zigzag (12,0) tube as its 48-atom translational cell without the rotation, 5 kappa
   // points (kappa = 0 among them), 30 K. At kappa = 0 the bands that cross the Fermi level
-  // (angular momenta +-4, folded onto one k) are exactly twofold degenerate; the curvature gap
-  // leaves the lower pair nearly full and the upper pair with occupation ~6e-7, its two members'
+  // (a pair of angular momenta +-mu, folded onto one k) are exactly twofold degenerate; the
+  // curvature gap leaves the lower pair nearly full and the upper pair with occupation ~6e-7, its two members'
   // occupations differing only by rounding. A threshold between those two occupations cuts the
   // level in two; the count is extended over the whole level, so the vectors entering the
   // density, and hence P and W, are the same as with the threshold just below the level.
-  // (An armchair tube has no such level: its crossing bands carry the self-conjugate angular
-  // momentum n and are not degenerate, and its degenerate levels are over 1 eV from the Fermi
-  // level, with occupations below 1e-60 at 100 K, far too small for a split to show.)
+  // (An armchair tube has no such level near the Fermi level: its crossing bands are not
+  // degenerate, and in the (5,5) cell the nearest degenerate levels are over 1.3 eV away, with
+  // occupations below 1e-60 at 100 K, far too small for a split to show.)
   const double bond = 1.42 * units::kAngstromInBohr;
   const auto cell = objective::buildNanotubeTranslational(12, 0, bond, false);
   const auto& params = *mesochain::testing::carbonParameters();
