@@ -31,7 +31,9 @@
 #include "common/plot/figure.hpp"
 #include "common/plot/png_io.hpp"
 #include "common/units.hpp"
+#include "dftb/band_solver.hpp"
 #include "dftb/calculator.hpp"
+#include "dftb/density_matrix.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "parallel/communicator.hpp"
 
@@ -56,6 +58,7 @@ dftb::Calculator calculator(const std::string& table, int nKappa, double kelvin,
 
 struct Timing {
   double perEvaluation = 0, eigensolver = 0, assembly = 0, density = 0, forces = 0, other = 0;
+  double densityProducts = 0;  // the BLAS-3 part of `density` (zherk / dsyrk)
   // Each rank's process CPU seconds per evaluation (all its threads), rank order (one entry
   // without MPI); the largest is the critical path, less sensitive to other load on a shared
   // machine than the wall time.
@@ -74,9 +77,11 @@ Timing timeEvaluations(const dftb::Calculator& calc, const objective::ObjectiveC
     t.eigensolver += res.extras.at("time_eigensolver");
     t.assembly += res.extras.at("time_assembly");
     t.density += res.extras.at("time_density");
+    t.densityProducts += res.extras.at("time_density_products");
     t.forces += res.extras.at("time_forces");
   }
-  for (double* x : {&t.perEvaluation, &t.eigensolver, &t.assembly, &t.density, &t.forces})
+  for (double* x : {&t.perEvaluation, &t.eigensolver, &t.assembly, &t.density, &t.densityProducts,
+                    &t.forces})
     *x /= repeats;
   const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC / repeats;
   t.cpuPerRank = calc.communicator().allgather({cpu});
@@ -151,11 +156,16 @@ int benchDftb(const std::string& table, int repeats, bool comparePaths) {
       std::cout << fmt::format(
           "  LAPACK alone, {} k-points of order {}, {} of {} eigenpairs used (one thread, best of 3):\n"
           "    zhegvd all pairs {:.4f} s | zhegvx used pairs {:.4f} s | faster per k-point {:.4f} s\n"
-          "    total / LAPACK alone {:.2f} | share of the total in LAPACK (eigensolver) {:.1f}%\n"
+          "    total / LAPACK alone {:.2f} | share of the total in LAPACK (eigensolver) {:.1f}%, "
+          "with the BLAS-3 density products {:.1f}%\n"
           "    zpotrf of S(k), reused by SCC iterations: {:.4f} s per evaluation\n",
           ref.kpoints, ref.orbitals, ref.vectorsUsed, ref.kpoints * ref.orbitals, ref.allPairs,
           ref.usedPairs, ref.best, t.perEvaluation / ref.best,
-          100 * t.eigensolver / t.perEvaluation, ref.choleskyFactor);
+          100 * t.eigensolver / t.perEvaluation,
+          100 * (t.eigensolver + t.densityProducts) / t.perEvaluation, ref.choleskyFactor);
+      const dftb::BandGeometry geo(c.cell, *params, c.nKappa, objective::AngularSampling{});
+      std::cout << fmt::format("    density blocks formed (BLAS-3): {:.1f}% of the n^2 elements\n",
+                               100 * dftb::DensityBlockPlan(geo.layout, geo.images).fraction);
     }
   return 0;
 }

@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "common/errors.hpp"
+#include "dftb/density_matrix.hpp"
 #include "parallel/exact_sum.hpp"
 #include "parallel/work_split.hpp"
 
@@ -43,13 +44,15 @@ struct BlasThreadsOff {
 struct ThreadWork {
   ReducedProblem<std::complex<double>> hk;  // H(k) when nothing is kept per k-point
   ReducedProblem<double> hr;
-  ComplexMatrix sk, c, x, y;  // c: eigenvectors of the occupied states (OccupiedOnly)
+  ComplexMatrix sk, c;  // c: eigenvectors of the occupied states (OccupiedOnly)
+  ComplexMatrix y, rho, rhoE;  // one k-point's Y = X diag(e) and density matrices
+                               // (density_matrix.hpp; viewed as real at a real k-point)
   Eigen::MatrixXd sr, cr;
   GeneralizedEigensolver solver;
   std::vector<OrbitalBlock> p, w;  // one k-point's contribution
   Eigen::VectorXd onsite;
   parallel::ExactSum sum;  // this thread's k-points: P blocks, W blocks, on-site diagonal
-  double tAssembly = 0, tSolve = 0, tVectors = 0, tDensity = 0;
+  double tAssembly = 0, tSolve = 0, tVectors = 0, tProducts = 0, tDensity = 0;
 };
 }  // namespace
 
@@ -94,7 +97,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geo, const std::vector<OrbitalBlock>& h,
                         const Eigen::VectorXd& onsiteShift, double kT, bool density,
                         EigenvectorPath requestedPath, OverlapFactors* factors,
-                        const parallel::Communicator& comm) {
+                        const parallel::Communicator& comm, double occupationThreshold) {
   using Mode = GeneralizedEigensolver::Mode;
   const auto& kpts = geo.grid.points();
   const int nk = static_cast<int>(kpts.size());
@@ -137,8 +140,9 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       w.sr.resize(n, n);
     }
     if (density) {
-      w.x.resize(n, n);
       w.y.resize(n, n);
+      w.rho.resize(n, n);
+      w.rhoE.resize(n, n);
       if (subset) {
         w.c.resize(n, n);
         if (anyReal) w.cr.resize(n, n);
@@ -226,6 +230,7 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
   // Pass 2: the eigenvectors of the states that carry charge (OccupiedOnly), then the density
   // and energy-weighted density folded onto the image pairs.
   sol.statesUsed.assign(nk, 0);
+  const DensityBlockPlan plan(geo.layout, geo.images);
   {
     BlasThreadsOff blasOff;
 #pragma omp parallel for num_threads(nThreads) schedule(dynamic)
@@ -235,36 +240,47 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       try {
         const Eigen::VectorXd& f = sol.filling.occupations[k];
         const Eigen::VectorXd& e = sol.levels[k];
-        const int m = occupiedStateCount(e, f);
+        const int m = occupiedStateCount(e, f, occupationThreshold);
         sol.statesUsed[k] = m;
         const auto a = Clock::now();
-        const auto sqrtF = f.head(m).cwiseSqrt().asDiagonal();
+        Clock::time_point b, d;  // vectors | BLAS-3 products | folding and exact sums
+        // The occupied columns (scaled in place into X: nothing reads them afterwards), and Y,
+        // rho, rho^E in the thread's buffers (viewed as real ones at a real k-point).
         if (kpts[k].realPhases) {
           if (subset) w.solver.lowestVectors(keptReal[k], m, w.cr, "band structure (real k-point)");
-          const Eigen::MatrixXd& c = subset ? w.cr : keptReal[k].a;
-          w.x.leftCols(m) = (c.leftCols(m) * sqrtF).cast<std::complex<double>>();
+          Eigen::MatrixXd& c = subset ? w.cr : keptReal[k].a;
+          b = Clock::now();
+          MatrixMap<double> rho(reinterpret_cast<double*>(w.rho.data()), n, n);
+          MatrixMap<double> rhoE(reinterpret_cast<double*>(w.rhoE.data()), n, n);
+          MatrixMap<double> y(reinterpret_cast<double*>(w.y.data()), n, m);
+          formDensityMatrices<double>(plan, MatrixMap<double>(c.data(), n, m), y, m, f, e, rho,
+                                      rhoE);
+          d = Clock::now();
+          foldDensityBlocks<double>(plan, geo.layout, geo.images, geo.grid, kpts[k],
+                                    sol.weights[k], rho, rhoE, w.p, w.w);
+          w.onsite.noalias() = sol.weights[k] * rho.diagonal();
         } else {
           if (subset) w.solver.lowestVectors(keptComplex[k], m, w.c, "band structure");
-          const ComplexMatrix& c = subset ? w.c : keptComplex[k].a;
-          w.x.leftCols(m).noalias() = c.leftCols(m) * sqrtF;
+          ComplexMatrix& c = subset ? w.c : keptComplex[k].a;
+          b = Clock::now();
+          MatrixMap<std::complex<double>> rho(w.rho.data(), n, n), rhoE(w.rhoE.data(), n, n);
+          formDensityMatrices<std::complex<double>>(
+              plan, MatrixMap<std::complex<double>>(c.data(), n, m),
+              MatrixMap<std::complex<double>>(w.y.data(), n, m), m, f, e, rho, rhoE);
+          d = Clock::now();
+          foldDensityBlocks<std::complex<double>>(plan, geo.layout, geo.images, geo.grid, kpts[k],
+                                                  sol.weights[k], rho, rhoE, w.p, w.w);
+          w.onsite.noalias() = sol.weights[k] * rho.diagonal().real();
         }
-        const auto b = Clock::now();
-        w.y.leftCols(m).noalias() = w.x.leftCols(m) * e.head(m).asDiagonal();
-        // This k-point's contribution alone, then into the thread's exact sum.
-        for (std::size_t p = 0; p < nPairs; ++p) {
-          w.p[p].setZero();
-          w.w[p].setZero();
-        }
-        accumulateDensityBlocks(geo.layout, geo.images, geo.grid, kpts[k], sol.weights[k],
-                                w.x.leftCols(m), w.y.leftCols(m), w.p, w.w);
-        w.onsite.noalias() = sol.weights[k] * w.x.leftCols(m).rowwise().squaredNorm();
+        // This k-point's contribution into the thread's exact sum.
         for (std::size_t p = 0; p < nPairs; ++p) {
           w.sum.add(p * blockSize, w.p[p].data(), blockSize);
           w.sum.add((nPairs + p) * blockSize, w.w[p].data(), blockSize);
         }
         w.sum.add(2 * nPairs * blockSize, w.onsite.data(), n);
         w.tVectors += seconds(a, b);
-        w.tDensity += seconds(b, Clock::now());
+        w.tProducts += seconds(b, d);
+        w.tDensity += seconds(d, Clock::now());
       } catch (const std::exception& e) {
 #pragma omp critical
         failure = std::string(e.what()) + " (kappa = " + std::to_string(kpts[k].kappa) +
@@ -294,17 +310,20 @@ BandSolution solveBands(const ObjectiveCell& cell, const ParameterSet& params,
       for (int k = 0; k < nk; ++k)
         if (owner[k] == r) sol.statesUsed[k] = static_cast<int>(all[at++]);
   }
-  double tV = 0, tD = 0;
+  double tV = 0, tP = 0, tD = 0;
   for (const auto& w : work) {
     tV += w.tVectors;
+    tP += w.tProducts;
     tD += w.tDensity;
   }
   sol.p = std::move(work[0].p);
   sol.w = std::move(work[0].w);
   sol.onsiteDensity = std::move(work[0].onsite);
   const double pass2 = seconds(t3, Clock::now());
-  sol.timeEigensolver += (tV + tD) > 0 ? pass2 * tV / (tV + tD) : 0.0;
-  sol.timeDensity = (tV + tD) > 0 ? pass2 * tD / (tV + tD) : pass2;
+  const double tPass2 = tV + tP + tD;
+  sol.timeEigensolver += tPass2 > 0 ? pass2 * tV / tPass2 : 0.0;
+  sol.timeDensityProducts = tPass2 > 0 ? pass2 * tP / tPass2 : 0.0;
+  sol.timeDensity = tPass2 > 0 ? pass2 * (tP + tD) / tPass2 : pass2;
   return sol;
 }
 

@@ -65,8 +65,10 @@ struct BandSolution {
   Eigen::VectorXd onsiteDensity;
   // Wall-clock seconds.
   // timeEigensolver: every LAPACK step (both passes of the OccupiedOnly path); timeDensity:
-  // the density blocks only.
+  // the density matrices and their blocks (dftb/density_matrix.hpp), of which
+  // timeDensityProducts is the BLAS-3 products (zherk / dsyrk) alone.
   double timeAssembly = 0, timeEigensolver = 0, timeFilling = 0, timeDensity = 0;
+  double timeDensityProducts = 0;
   EigenvectorPath path = EigenvectorPath::AllVectors;  // the one taken (density only)
   std::vector<int> statesUsed;  // per k-point: eigenvectors entering the density (density only)
 };
@@ -75,13 +77,16 @@ struct BandSolution {
 // or one energy per cell atom added to its on-site diagonal (Hartree). kT > 0 (Hartree).
 // path: how the eigenvectors are computed (the results agree to rounding; see eigensolver.hpp);
 // factors: Cholesky factors of S(k) kept across solves of this geometry (or none); comm: the
-// ranks that share the k-points (collective over them; every rank gets the whole solution).
+// ranks that share the k-points (collective over them; every rank gets the whole solution);
+// occupationThreshold: the occupation above which a state's vector enters the density
+// (occupiedStateCount in eigensolver.hpp; a parameter for the tests of the cut).
 BandSolution solveBands(const objective::ObjectiveCell& cell, const ParameterSet& params,
                         const BandGeometry& geometry, const std::vector<OrbitalBlock>& h,
                         const Eigen::VectorXd& onsiteShift, double kT, bool density,
                         EigenvectorPath path = EigenvectorPath::Automatic,
                         OverlapFactors* factors = nullptr,
-                        const parallel::Communicator& comm = parallel::Communicator::serial());
+                        const parallel::Communicator& comm = parallel::Communicator::serial(),
+                        double occupationThreshold = kOccupationThreshold);
 
 // The rank of `comm` that solves each k-point of `grid` (the same on every rank).
 std::vector<int> kpointOwners(const objective::HelicalKGrid& grid,

@@ -104,6 +104,7 @@ void BandStructureTerm::evaluate(const ObjectiveCell& cell, const EvaluationRequ
   out.dEdTranslation = d.dEdTranslation;
   out.dEdTwist = d.dEdTwist;
   out.extras["time_density"] = sol.timeDensity;
+  out.extras["time_density_products"] = sol.timeDensityProducts;
   out.extras["time_forces"] = std::chrono::duration<double>(Clock::now() - t4).count();
 }
 

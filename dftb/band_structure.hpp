@@ -7,7 +7,7 @@
 // ledger "band" (sum f e, Energy), "entropy_term_ts" (TS, Entropy) and, with sampled angular
 // momenta, "angular_sampling_error_estimate" (Reported); as extras: fermi_level, homo, lumo,
 // electrons, kpoints, and timings (time_assembly, time_eigensolver, time_filling, time_density,
-// time_forces, in seconds).
+// time_density_products (its BLAS-3 part), time_forces, in seconds).
 #include <memory>
 
 #include "dftb/eigensolver.hpp"

@@ -114,34 +114,6 @@ void assembleBlochReal(const ObjectiveCell& cell, const ParameterSet& params,
                hk, sk);
 }
 
-void accumulateDensityBlocks(const OrbitalLayout& layout, const ImageList& images,
-                             const HelicalKGrid& grid, const HelicalKPoint& k, double weight,
-                             const Eigen::Ref<const ComplexMatrix>& x,
-                             const Eigen::Ref<const ComplexMatrix>& y,
-                             std::vector<OrbitalBlock>& p, std::vector<OrbitalBlock>& w) {
-  using Block = Eigen::Matrix<std::complex<double>, kMaxOrbitalsPerAtom, kMaxOrbitalsPerAtom>;
-  const auto& pairs = images.pairs();
-  Block rho, rhoE;
-  for (size_t first = 0; first < pairs.size();) {
-    const int i = pairs[first].i, j = pairs[first].j;
-    size_t last = first;
-    while (last < pairs.size() && pairs[last].i == i && pairs[last].j == j) ++last;
-    const int oi = layout.offset[i], oj = layout.offset[j];
-    const int ni = layout.count[i], nj = layout.count[j];
-    rho.topLeftCorner(nj, ni).noalias() = x.middleRows(oj, nj) * x.middleRows(oi, ni).adjoint();
-    rhoE.topLeftCorner(nj, ni).noalias() = y.middleRows(oj, nj) * x.middleRows(oi, ni).adjoint();
-    for (size_t q = first; q < last; ++q) {
-      const std::complex<double> phase = weight * std::polar(1.0, grid.phase(k, pairs[q].g));
-      for (int b = 0; b < nj; ++b)
-        for (int a = 0; a < ni; ++a) {
-          p[q](a, b) += (phase * rho(b, a)).real();
-          w[q](a, b) += (phase * rhoE(b, a)).real();
-        }
-    }
-    first = last;
-  }
-}
-
 BandDerivatives contractDerivatives(const ObjectiveCell& cell, const ParameterSet& params,
                                     const ImageList& images, const std::vector<OrbitalBlock>& pm,
                                     const std::vector<OrbitalBlock>& wm, bool strain) {

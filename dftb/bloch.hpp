@@ -56,17 +56,8 @@ void assembleBlochReal(const objective::ObjectiveCell& cell, const ParameterSet&
                        Eigen::MatrixXd& hk, Eigen::MatrixXd& sk,
                        const Eigen::VectorXd& onsiteShift = Eigen::VectorXd());
 
-// Folds the density and energy-weighted density of one k-point onto the image pairs:
-//   P^p_ab += weight * Re(exp(i theta_g) rho[(j,b),(i,a)]),  likewise W^p with rho^E,
-// where rho = X X^+ and rho^E = Y X^+ with X = C sqrt(f) and Y = X diag(e) (n x n_occ). Only
-// the blocks of atom pairs that have an image within the cutoff are formed (pairs of one (i, j)
-// are contiguous in the image list), never the full n x n matrices.
-void accumulateDensityBlocks(const OrbitalLayout& layout, const objective::ImageList& images,
-                             const objective::HelicalKGrid& grid,
-                             const objective::HelicalKPoint& k, double weight,
-                             const Eigen::Ref<const ComplexMatrix>& x,
-                             const Eigen::Ref<const ComplexMatrix>& y,
-                             std::vector<OrbitalBlock>& p, std::vector<OrbitalBlock>& w);
+// The density and energy-weighted density P^p, W^p of one k-point are formed and folded onto
+// the image pairs in dftb/density_matrix.hpp.
 
 // Contracts derivative blocks with P and W: gradient (3 x N_o), dE/dT, dE/dgamma.
 struct BandDerivatives {

@@ -1,5 +1,5 @@
 #pragma once
-// The LAPACK / BLAS routines of the eigensolver, declared once, and one overload set per scalar
+// The LAPACK / BLAS routines of the eigensolver and the density matrices, declared once, and one overload set per scalar
 // type (double: real symmetric, std::complex<double>: Hermitian) so that the solver is written
 // once. Character arguments carry gfortran's hidden length arguments (trailing size_t).
 // Routine documentation: LAPACK Users' Guide, 3rd ed. (Anderson et al., SIAM 1999) and the
@@ -50,6 +50,12 @@ void ztrsm_(const char* side, const char* uplo, const char* transa, const char* 
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag,
             const int* m, const int* n, const double* alpha, const double* a, const int* lda,
             double* b, const int* ldb, flen, flen, flen, flen);
+void zgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+            const cd* alpha, const cd* a, const int* lda, const cd* b, const int* ldb,
+            const cd* beta, cd* c, const int* ldc, flen, flen);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+            const double* alpha, const double* a, const int* lda, const double* b,
+            const int* ldb, const double* beta, double* c, const int* ldc, flen, flen);
 }
 
 // ---- Overloads by scalar type ------------------------------------------------------------
@@ -143,6 +149,17 @@ inline void trsm(bool lowerAdjoint, int n, int m, const double* a, double* b) {
   const double one = 1.0;
   dtrsm_("L", lowerAdjoint ? "L" : "U", lowerAdjoint ? "T" : "N", "N", &n, &m, &one, a, &n, b,
          &n, 1, 1, 1, 1);
+}
+
+// C (rows x cols) <- A B^H for A rows x k, B cols x k; all three with leading dimension ld.
+inline void gemmAdjoint(int rows, int cols, int k, const cd* a, const cd* b, cd* c, int ld) {
+  const cd one = 1.0, zero = 0.0;
+  zgemm_("N", "C", &rows, &cols, &k, &one, a, &ld, b, &ld, &zero, c, &ld, 1, 1);
+}
+inline void gemmAdjoint(int rows, int cols, int k, const double* a, const double* b, double* c,
+                        int ld) {
+  const double one = 1.0, zero = 0.0;
+  dgemm_("N", "T", &rows, &cols, &k, &one, a, &ld, b, &ld, &zero, c, &ld, 1, 1);
 }
 
 // ---- Workspace queries (LWORK = -1): the optimal length the implementation asks for -----
