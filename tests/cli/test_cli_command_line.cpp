@@ -170,7 +170,7 @@ TEST_F(CommandLine, UnsetRemovesKeysBeforeSet) {
     return readJson(dir / name).at("energies_hartree").at("mermin_free").at("per_cell").get<double>();
   };
   EXPECT_EQ(energy("unset.json"), energy("energy.json"));
-  EXPECT_NE(err.find("Mermin free energy"), std::string::npos) << err;
+  EXPECT_NE(out.find("Mermin free energy"), std::string::npos) << out;
   // One key: the relaxation runs with the default step limit instead of 7 (it converges; no exit 3).
   ASSERT_EQ(run("run relax.toml --json relaxed.json --unset task.max_steps", out, err), 0) << err;
   // A key the file does not have, a value given to --unset, a malformed key: errors naming them.
