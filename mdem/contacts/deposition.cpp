@@ -10,17 +10,16 @@
 
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/portable_random.hpp"
 #include "mdem/contacts/drape_geometry.hpp"
 #include "mdem/units.hpp"
 
 namespace mesochain::mdem {
 
 namespace {
-// Uniform double in [0, 1) from 53 random bits (portable, unlike std::uniform_real_distribution).
-double uniform(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
 // Standard normal by Box-Muller from two portable uniforms.
 double normal(std::mt19937_64& g) {
-  const double u1 = uniform(g), u2 = uniform(g);
+  const double u1 = uniformUnit(g), u2 = uniformUnit(g);
   return std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * units::kPi * u2);
 }
 
@@ -178,13 +177,13 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
                        "a thickness the film reaches within the element budget (a smaller thickness_nm, or a smaller film)");
     bool placed = false;
     for (int attempt = 0; attempt < spec.attemptsPerTube && !placed; ++attempt) {
-      path.start = Vec3(px * uniform(gen), py * uniform(gen), 0.0);
-      double phi = uniform(gen) < spec.alignedFraction ? spec.alignmentAngle + spec.alignmentSpread * normal(gen)
-                                                        : 2.0 * units::kPi * uniform(gen);
-      if (uniform(gen) < 0.5) phi += units::kPi;
+      path.start = Vec3(px * uniformUnit(gen), py * uniformUnit(gen), 0.0);
+      double phi = uniformUnit(gen) < spec.alignedFraction ? spec.alignmentAngle + spec.alignmentSpread * normal(gen)
+                                                        : 2.0 * units::kPi * uniformUnit(gen);
+      if (uniformUnit(gen) < 0.5) phi += units::kPi;
       path.heading.resize(n);
       for (int k = 0; k < n; ++k) {
-        if (k > 0) phi += spec.waviness * (2.0 * uniform(gen) - 1.0);
+        if (k > 0) phi += spec.waviness * (2.0 * uniformUnit(gen) - 1.0);
         path.heading[k] = phi;
       }
       std::fill(zeta.begin(), zeta.end(), 0.0);

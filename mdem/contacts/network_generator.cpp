@@ -7,17 +7,11 @@
 
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/portable_random.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/units.hpp"
 
 namespace mesochain::mdem {
-
-namespace {
-// Uniform double in [0, 1) from 53 random bits (portable, unlike std::uniform_real_distribution).
-double uniform(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
-
-
-}  // namespace
 
 void generateNetwork(Scene& scene, const NetworkSpec& spec) {
   const ElementType& t = scene.elementTypes.at(spec.elementType);
@@ -61,13 +55,13 @@ void generateNetwork(Scene& scene, const NetworkSpec& spec) {
     bool placed = false;
     for (int attempt = 0; attempt < spec.attemptsPerTube && !placed; ++attempt) {
       segs.clear();
-      double phi = 2.0 * units::kPi * uniform(gen);
-      const double z = spec.size.z() * uniform(gen);
-      Vec3 x(spec.size.x() * uniform(gen), spec.size.y() * uniform(gen), z);
+      double phi = 2.0 * units::kPi * uniformUnit(gen);
+      const double z = spec.size.z() * uniformUnit(gen);
+      Vec3 x(spec.size.x() * uniformUnit(gen), spec.size.y() * uniformUnit(gen), z);
       placed = true;
       for (int k = 0; k < spec.elementsPerTube; ++k) {
         if (k > 0) {
-          const double turn = spec.waviness * (2.0 * uniform(gen) - 1.0);
+          const double turn = spec.waviness * (2.0 * uniformUnit(gen) - 1.0);
           const Vec3 prev(std::cos(phi), std::sin(phi), 0.0);
           phi += turn;
           const Vec3 next(std::cos(phi), std::sin(phi), 0.0);
