@@ -121,23 +121,7 @@ TEST(MdemAlignedContact, ForcesAndTorquesAreMinusEnergyGradient) {
     SCOPED_TRACE(++geometry);
     const ContactPairResult r = anisotropicVdw(alignedKernel(), a0, b0);
     ASSERT_NE(r.energy, 0.0);
-    const double floor = 1e-3 + 1e-4 * std::abs(r.energy);
-    const double fs = r.forceA.norm() + floor, ts = r.torqueA.norm() + r.torqueB.norm() + kHalf * fs;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 e = eps * Vec3::Unit(k);
-      Segment ap = a0, am = a0, bp = b0, bm = b0;
-      ap.centre += e, am.centre -= e, bp.centre += e, bm.centre -= e;
-      EXPECT_NEAR(r.forceA[k], -(energy(ap, b0) - energy(am, b0)) / (2 * eps), 1e-5 * fs);
-      EXPECT_NEAR(r.forceB[k], -(energy(a0, bp) - energy(a0, bm)) / (2 * eps), 1e-5 * fs);
-      ap = am = a0, bp = bm = b0;
-      ap.axis = rotate(expMap(e), a0.axis), am.axis = rotate(expMap(-e), a0.axis);
-      bp.axis = rotate(expMap(e), b0.axis), bm.axis = rotate(expMap(-e), b0.axis);
-      EXPECT_NEAR(r.torqueA[k], -(energy(ap, b0) - energy(am, b0)) / (2 * eps), 1e-5 * ts);
-      EXPECT_NEAR(r.torqueB[k], -(energy(a0, bp) - energy(a0, bm)) / (2 * eps), 1e-5 * ts);
-    }
-    EXPECT_LT((r.forceA + r.forceB).norm(), 1e-12 * fs);
-    const Vec3 moment = a0.centre.cross(r.forceA) + b0.centre.cross(r.forceB) + r.torqueA + r.torqueB;
-    EXPECT_LT(moment.norm(), 1e-9 * (fs * (a0.centre.norm() + b0.centre.norm()) + ts));
+    testing::expectPairForcesAreMinusGradient(r, a0, b0, energy, eps, kHalf);
   }
 }
 
