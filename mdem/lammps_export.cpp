@@ -1,4 +1,4 @@
-// `mesochain bench network --lammps PREFIX`: writes the benchmark network as the input of its
+// `mesochain-bench network --lammps PREFIX`: writes the benchmark network as the input of its
 // LAMMPS peer (bench/lammps/in.network, README.md there): point particles at the element centres
 // (one per element, element mass), harmonic bonds along each tube and harmonic angles at each
 // inner element, and a pair table U(r) between elements, the isotropic form of mesochain's
@@ -93,7 +93,7 @@ void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& 
   lo.array() -= 5.0, hi.array() += 5.0;
 
   std::ofstream d = openOut(prefix + ".data");
-  d << "LAMMPS data file: mesochain bench network, " << n << " elements (bench/lammps/README.md)\n\n";
+  d << "LAMMPS data file: mesochain-bench network, " << n << " elements (bench/lammps/README.md)\n\n";
   d << fmt::format("{} atoms\n{} bonds\n{} angles\n1 atom types\n{} bond types\n{} angle types\n\n", n, bonds.size(),
                    angles.size(), bondTypes.rest.size(), angleTypes.rest.size());
   for (int k = 0; k < 3; ++k) d << fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
@@ -131,7 +131,7 @@ void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& 
   }
 
   std::ofstream s = openOut(prefix + ".settings");
-  s << "# mesochain bench network: coefficients and time step (written by `mesochain bench network --lammps`)\n";
+  s << "# mesochain-bench network: coefficients and time step (written by `mesochain-bench network --lammps`)\n";
   for (std::size_t k = 0; k < bondTypes.rest.size(); ++k)
     s << fmt::format("bond_coeff {} {:.9g} {:.6f}\n", k + 1, bondK[k], bondTypes.rest[k]);
   for (std::size_t k = 0; k < angleTypes.rest.size(); ++k)

@@ -1,5 +1,5 @@
 #pragma once
-// Export of an mDEM tube network for the LAMMPS peer of `mesochain bench network`
+// Export of an mDEM tube network for the LAMMPS peer of `mesochain-bench network`
 // (bench/lammps/README.md): the same network as point particles with bonds, angles and a pair table.
 #include <string>
 
