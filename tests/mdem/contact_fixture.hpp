@@ -4,7 +4,10 @@
 // 38.2 atoms/nm^2, and an independent reference: the LJ energy of two finite cylindrical
 // surfaces by direct quadrature (Gauss-Legendre along the axes, trapezoid around them).
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -102,6 +105,33 @@ inline double surfaceReferenceEnergy(const Segment& a, const Segment& b, double 
     e += p.w * row;
   }
   return 4.0 * lj.epsilon * lj.surfaceDensity * lj.surfaceDensity * e;
+}
+
+// The rows of tests/data/mdem/vdw_vs_surface_quadrature.csv (wall-gap change from the
+// equilibrium axis distance, crossing angle, offset along a, tolerance in %): `energy(a, b)` of
+// segment b crossing a 2-nm segment a is within the row's tolerance of the direct surface
+// quadrature, for all 8 rows.
+template <class Energy>
+void expectSurfaceQuadratureRows(Energy energy) {
+  const double dEq = tubePotential().equilibriumDistance();
+  std::ifstream in(std::string(MESOCHAIN_TEST_DATA) + "/mdem/vdw_vs_surface_quadrature.csv");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int cases = 0;
+  const Segment a{Vec3::Zero(), Vec3::UnitX(), 0.5 * kSegmentLength};
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    double extra, theta, offset, tolerance;
+    char c;
+    std::istringstream row(line);
+    row >> extra >> c >> theta >> c >> offset >> c >> tolerance;
+    const Segment b{Vec3(offset, dEq + extra, 0.0), Vec3(std::cos(theta), 0.0, std::sin(theta)),
+                    0.5 * kSegmentLength};
+    const double model = energy(a, b), ref = surfaceReferenceEnergy(a, b, kTubeRadius);
+    EXPECT_LT(100.0 * std::abs(model - ref) / std::abs(ref), tolerance) << line;
+    ++cases;
+  }
+  EXPECT_EQ(cases, 8);
 }
 
 // The (10,10) tube model of the scene-file tests, as TOML: cylinders of 2 nm (325 carbon

@@ -201,25 +201,8 @@ TEST(MdemAlignedContact, VanishesWhereTheNeighbourListMayLeaveThePairOut) {
 TEST(MdemAlignedContact, MatchesSurfaceQuadratureLikeTheRule) {
   // The rows of tests/data/mdem/vdw_vs_surface_quadrature.csv, with the aligned path on (its
   // parallel rows run the tables).
-  const double dEq = tubePotential().equilibriumDistance();
-  std::ifstream in(std::string(MESOCHAIN_TEST_DATA) + "/mdem/vdw_vs_surface_quadrature.csv");
-  ASSERT_TRUE(in.good());
-  std::string line;
-  int cases = 0;
-  const Segment a = seg(Vec3::Zero(), Vec3::UnitX());
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    double extra, theta, offset, tolerance;
-    char c;
-    std::istringstream row(line);
-    row >> extra >> c >> theta >> c >> offset >> c >> tolerance;
-    const Segment b = seg(Vec3(offset, dEq + extra, 0.0), Vec3(std::cos(theta), 0.0, std::sin(theta)));
-    const double model = anisotropicVdw(alignedKernel(12), a, b).energy;
-    const double ref = surfaceReferenceEnergy(a, b, kTubeRadius);
-    EXPECT_LT(100.0 * std::abs(model - ref) / std::abs(ref), tolerance) << line;
-    ++cases;
-  }
-  EXPECT_EQ(cases, 8);
+  testing::expectSurfaceQuadratureRows(
+      [](const Segment& a, const Segment& b) { return anisotropicVdw(alignedKernel(12), a, b).energy; });
 }
 
 }  // namespace

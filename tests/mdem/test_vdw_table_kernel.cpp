@@ -83,25 +83,8 @@ TEST(MdemVdwTableKernel, OtherPartnerLengthFallsBackToTheLineKernel) {
 
 TEST(MdemVdwTableKernel, MatchesSurfaceQuadratureLikeTheLineKernel) {
   // The rows of tests/data/mdem/vdw_vs_surface_quadrature.csv, with the table kernel.
-  const double dEq = tubePotential().equilibriumDistance();
-  std::ifstream in(std::string(MESOCHAIN_TEST_DATA) + "/mdem/vdw_vs_surface_quadrature.csv");
-  ASSERT_TRUE(in.good());
-  std::string line;
-  int cases = 0;
-  const Segment a = seg(Vec3::Zero(), Vec3::UnitX());
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    double extra, theta, offset, tolerance;
-    char c;
-    std::istringstream row(line);
-    row >> extra >> c >> theta >> c >> offset >> c >> tolerance;
-    const Segment b = seg(Vec3(offset, dEq + extra, 0.0), Vec3(std::cos(theta), 0.0, std::sin(theta)));
-    const double model = anisotropicVdw(tableKernel(12), a, b).energy;
-    const double ref = surfaceReferenceEnergy(a, b, kTubeRadius);
-    EXPECT_LT(100.0 * std::abs(model - ref) / std::abs(ref), tolerance) << line;
-    ++cases;
-  }
-  EXPECT_EQ(cases, 8);
+  testing::expectSurfaceQuadratureRows(
+      [](const Segment& a, const Segment& b) { return anisotropicVdw(tableKernel(12), a, b).energy; });
 }
 
 // Forces and torques of the table kernel against central differences of its energy.
