@@ -7,8 +7,11 @@
 
 namespace mesochain::beam::testing {
 
+// The section: T0, thickness h and width w (Bohr), Y and G (Hartree / Bohr^3).
+inline constexpr double kT0 = 4.65, kH = 2.0, kW = 40.0, kY = 0.034, kG = 0.013;
+
 inline BeamConstants collapsedTubeConstants() {
-  const double y = 0.034, g = 0.013, h = 2.0, w = 40.0, t0 = 4.65;
+  const double y = kY, g = kG, h = kH, w = kW, t0 = kT0;
   BeamConstants c;
   c.cellLength = t0;
   c.stretch = y * h * w * t0;

@@ -12,22 +12,19 @@
 #include <gtest/gtest.h>
 
 #include "beam/beam_run.hpp"
+#include "beam_constants_support.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::beam {
 namespace {
 
-constexpr double kT0 = 4.65, kH = 2.0, kW = 40.0, kY = 0.034, kG = 0.013;
+using testing::kG;
+using testing::kH;
+using testing::kT0;
+using testing::kW;
+using testing::kY;
 
-BeamConstants truth() {
-  BeamConstants c;
-  c.cellLength = kT0;
-  c.stretch = kY * kH * kW * kT0;
-  c.twist = kG * (kH * kW * kW * kW + kW * kH * kH * kH) / 12.0 / kT0;
-  c.bendSoft = kY * kW * kH * kH * kH / 12.0 * kT0;
-  c.bendHard = kY * kH * kW * kW * kW / 12.0 * kT0;
-  return c;
-}
+BeamConstants truth() { return testing::collapsedTubeConstants(); }
 
 // A scan table of U = -500 + k x^2 / 2 - (k / x_a^2) x^4 with x_a = 40 * step (2 x^2 / x_a^2: 1% anharmonic at
 // 2 steps) and small deterministic "noise" (relaxation residue).
