@@ -26,8 +26,6 @@ class SegmentLineTable {
   double uCut() const { return uCut_; }
   // D(h, |u0|) and its partial derivatives (h >= 0, u >= 0, inside the cuts).
   double eval(double h, double u, double* dh, double* du) const { return table_.eval(h, u, dh, du); }
-  // The same at two points (lanes), each lane bit for bit as eval.
-  Lanes evalPair(Lanes h, Lanes u, Lanes* dh, Lanes* du) const { return table_.evalPair(h, u, dh, du); }
   // The grid step of the table (nm): the early-out margin of the kernel is a few steps.
   double step() const { return step_; }
 

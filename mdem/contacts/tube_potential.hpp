@@ -58,17 +58,6 @@ inline Lanes lanes(const double* p) {
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-// Lane masks of comparisons of Lanes (all bits set where true), and index pairs.
-using LaneMask = long long __attribute__((vector_size(16)));
-using IndexPair = int __attribute__((vector_size(8)));
-// Where `m`: `v`, else +0.0 (a bitwise and).
-inline Lanes maskLanes(LaneMask m, Lanes v) {
-  LaneMask bits;
-  std::memcpy(&bits, &v, sizeof bits);
-  bits &= m;
-  std::memcpy(&v, &bits, sizeof v);
-  return v;
-}
 
 // C1 bicubic Hermite table on a uniform grid x = x0 + i dx, y = y0 + j dy.
 class BicubicTable {
@@ -80,9 +69,6 @@ class BicubicTable {
   // Value and partial derivatives at (x, y), clamped to the table (the caller keeps inside).
   // Inline: it is the inner loop of the contact kernel (44 multiply-adds, no division).
   double eval(double x, double y, double* fx, double* fy) const;
-  // The same at two points at once, lanes over the points (the quadrature points of one contact
-  // pair, vdw_contact.cpp): each lane is bit for bit what eval gives at that point.
-  Lanes evalPair(Lanes x, Lanes y, Lanes* fx, Lanes* fy) const;
   // The same with the cross derivative d2f/dxdy of the interpolant (tables built from tables).
   double eval(double x, double y, double* fx, double* fy, double* fxy) const;
   double xMax() const { return x0_ + (nx_ - 1) * dx_; }
@@ -127,43 +113,6 @@ inline double BicubicTable::eval(double x, double y, double* fx, double* fy) con
                   Lanes{vxq[1], vxqS[1]} * b3t;
   *fy = v[1] * invDy_;
   return v[0];
-}
-
-inline Lanes BicubicTable::evalPair(Lanes x, Lanes y, Lanes* fx, Lanes* fy) const {
-  // The operations of eval, in the same order, on the lanes (point A, point B): the clamps, the
-  // cell (i, j) and its local coordinates, the basis in t and in s, then the sums along y on the
-  // rows i and i+1 and along x. Only the 16 node values of the two cells are gathered lane by lane.
-  Lanes t = (x - x0_) * invDx_, s = (y - y0_) * invDy_;
-  const Lanes zero{0.0, 0.0}, tLast{tLast_, tLast_}, sLast{sLast_, sLast_};
-  t = t < zero ? zero : t, s = s < zero ? zero : s;  // std::clamp(v, 0, last)
-  t = tLast < t ? tLast : t, s = sLast < s ? sLast : s;
-  const Lanes iMax{nx_ - 2.0, nx_ - 2.0}, jMax{ny_ - 2.0, ny_ - 2.0};
-  Lanes ti = __builtin_convertvector(__builtin_convertvector(t, IndexPair), Lanes);
-  Lanes sj = __builtin_convertvector(__builtin_convertvector(s, IndexPair), Lanes);
-  ti = iMax < ti ? iMax : ti, sj = jMax < sj ? jMax : sj;
-  t -= ti, s -= sj;
-  const IndexPair node = __builtin_convertvector(ti * static_cast<double>(ny_) + sj, IndexPair);
-  const double *pA = &data_[4 * static_cast<std::size_t>(node[0])], *pB = &data_[4 * static_cast<std::size_t>(node[1])];
-  const std::size_t row = 4 * static_cast<std::size_t>(ny_);
-  const Lanes t2 = t * t, t3 = t2 * t, s2 = s * s, s3 = s2 * s;
-  const Lanes b1t = 3.0 * t2 - 2.0 * t3, b2t = t3 - 2.0 * t2 + t, b3t = t3 - t2, b0t = 1.0 - b1t;
-  const Lanes d1t = 6.0 * (t - t2), d2t = 3.0 * t2 - 4.0 * t + 1.0, d3t = 3.0 * t2 - 2.0 * t;
-  const Lanes b1s = 3.0 * s2 - 2.0 * s3, b2s = s3 - 2.0 * s2 + s, b3s = s3 - s2, b0s = 1.0 - b1s;
-  const Lanes d1s = 6.0 * (s - s2), d2s = 3.0 * s2 - 4.0 * s + 1.0, d3s = 3.0 * s2 - 2.0 * s;
-  // Row r (0: i, 1: i+1) of both cells: its value part v, x-slope part x and their y-derivatives.
-  Lanes v[2], xs[2], vS[2], xS[2];
-  for (int r = 0; r < 2; ++r) {
-    const double *a = pA + r * row, *b = pB + r * row;
-    const Lanes p0{a[0], b[0]}, p1{a[1], b[1]}, p2{a[2], b[2]}, p3{a[3], b[3]};
-    const Lanes p4{a[4], b[4]}, p5{a[5], b[5]}, p6{a[6], b[6]}, p7{a[7], b[7]};
-    v[r] = p0 * b0s + p4 * b1s + p2 * b2s + p6 * b3s;
-    xs[r] = p1 * b0s + p5 * b1s + p3 * b2s + p7 * b3s;
-    vS[r] = (p4 - p0) * d1s + p2 * d2s + p6 * d3s;
-    xS[r] = (p5 - p1) * d1s + p3 * d2s + p7 * d3s;
-  }
-  *fx = ((v[1] - v[0]) * d1t + xs[0] * d2t + xs[1] * d3t) * invDx_;
-  *fy = (vS[0] * b0t + vS[1] * b1t + xS[0] * b2t + xS[1] * b3t) * invDy_;
-  return v[0] * b0t + v[1] * b1t + xs[0] * b2t + xs[1] * b3t;
 }
 
 // The coarse-grained interaction of one pair of tube kinds (steps 1-4), built once.

@@ -4,10 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 
 namespace mesochain::mdem {
 
@@ -33,44 +29,6 @@ double closestDistance2(double c, double e, double f, double rr, double la, doub
   return std::max(0.0, rr + s * s + u * u + 2.0 * (s * e - u * f - s * u * c));
 }
 
-// The pair's frame for the quadrature along a: r0 = x_a - x_b, c = t_a.t_b, f = t_b.r0 and the
-// squared distance of the point s of a from b's axis line, h^2(s) = hA + s (hB + s hC).
-struct PairFrame {
-  Vec3 r0;
-  double c = 0.0, f = 0.0, hA = 0.0, hB = 0.0, hC = 0.0;
-};
-
-// False when the segments are beyond the early-out distance (the pair contributes exactly zero).
-[[gnu::always_inline]] inline bool pairFrame(const Segment& a, const Segment& b, double farCutDistance, PairFrame* p) {
-  const Vec3 r0 = a.centre - b.centre;
-  const Vec3 &ta = a.axis, &tb = b.axis;
-  const double la = a.halfLength, lb = b.halfLength, rr = r0.squaredNorm();
-  const double cut2 = farCutDistance * farCutDistance, reach = farCutDistance + la + lb;
-  if (rr >= reach * reach) return false;  // centres too far apart for any two points to be within the cut
-  const double c = ta.dot(tb), e = ta.dot(r0), f = tb.dot(r0);
-  if (closestDistance2(c, e, f, rr, la, lb) >= cut2) return false;
-  // h^2 = |r0_perp + s ta_perp|^2 with the parts normal to t_b formed once as vectors (no
-  // cancellation between |rel|^2 and u0^2 when the axes nearly meet).
-  const Vec3 r0Perp = r0 - f * tb, taPerp = ta - c * tb;
-  *p = {r0, c, f, r0Perp.squaredNorm(), 2.0 * r0Perp.dot(taPerp), taPerp.squaredNorm()};
-  return true;
-}
-
-// Forces and torques from the five sums of the rule (segmentQuadrature).
-[[gnu::always_inline]] inline ContactPairResult pairResult(const PairFrame& p, const Segment& a, const Segment& b, double energy, double sA,
-                             double sAs, double sB, double sBs) {
-  ContactPairResult r;
-  const Vec3 &ta = a.axis, &tb = b.axis;
-  r.energy = energy;
-  const Vec3 gradR = sA * p.r0 + sAs * ta + sB * tb;
-  r.forceA = -gradR;
-  r.forceB = gradR;
-  // torque = -t x dE/dt: the t_a part of dE/dt_a and the t_b part of dE/dt_b drop out.
-  r.torqueA = -(sAs * ta.cross(p.r0) + sBs * ta.cross(tb));
-  r.torqueB = -(sB * tb.cross(p.r0) + sBs * tb.cross(ta));
-  return r;
-}
-
 // E = sum_q w_q D(h_q, u0_q) along a, with rel_q = r0 + s_q t_a (r0 = x_a - x_b), u0 = rel . t_b,
 // h = |rel - u0 t_b|. With dh/drel = (rel - u0 t_b)/h,
 // dh/dt_b = -u0 rel/h, du0/drel = t_b, du0/dt_b = rel and alpha = D_h/h, beta = D_u0 - alpha u0:
@@ -81,15 +39,25 @@ struct PairFrame {
 template <class Density>
 ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a, const Segment& b, double hCut,
                                     double uCut, double farCutDistance, Density density) {
-  PairFrame p;
-  if (!pairFrame(a, b, farCutDistance, &p)) return {};
-  const double la = a.halfLength, hCut2 = hCut * hCut;
+  ContactPairResult r;
+  const Vec3 r0 = a.centre - b.centre;
+  const Vec3 &ta = a.axis, &tb = b.axis;
+  const double la = a.halfLength, lb = b.halfLength, rr = r0.squaredNorm();
+  const double cut2 = farCutDistance * farCutDistance, reach = farCutDistance + la + lb;
+  if (rr >= reach * reach) return r;  // centres too far apart for any two points to be within the cut
+  const double c = ta.dot(tb), e = ta.dot(r0), f = tb.dot(r0);
+  if (closestDistance2(c, e, f, rr, la, lb) >= cut2) return r;
+  // h^2 = |r0_perp + s ta_perp|^2 with the parts normal to t_b formed once as vectors (no
+  // cancellation between |rel|^2 and u0^2 when the axes nearly meet).
+  const Vec3 r0Perp = r0 - f * tb, taPerp = ta - c * tb;
+  const double hA = r0Perp.squaredNorm(), hB = 2.0 * r0Perp.dot(taPerp), hC = taPerp.squaredNorm();
+  const double hCut2 = hCut * hCut;
   double energy = 0.0, sA = 0.0, sAs = 0.0, sB = 0.0, sBs = 0.0;
   const std::size_t n = rule.x.size();
   for (std::size_t q = 0; q < n; ++q) {
     const double s = la * rule.x[q], w = la * rule.w[q];
-    const double u0 = p.f + s * p.c;
-    const double h2 = p.hA + s * (p.hB + s * p.hC);
+    const double u0 = f + s * c;
+    const double h2 = hA + s * (hB + s * hC);
     if (h2 >= hCut2 || std::abs(u0) >= uCut) continue;
     const double h = std::sqrt(std::max(h2, 0.0));
     double dh, du;
@@ -99,51 +67,25 @@ ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a
     sA += w * alpha, sAs += (w * s) * alpha;
     sB += w * beta, sBs += (w * s) * beta;
   }
-  return pairResult(p, a, b, energy, sA, sAs, sB, sBs);
+  r.energy = energy;
+  const Vec3 gradR = sA * r0 + sAs * ta + sB * tb;
+  r.forceA = -gradR;
+  r.forceB = gradR;
+  // torque = -t x dE/dt: the t_a part of dE/dt_a and the t_b part of dE/dt_b drop out.
+  r.torqueA = -(sAs * ta.cross(r0) + sBs * ta.cross(tb));
+  r.torqueB = -(sB * tb.cross(r0) + sBs * tb.cross(ta));
+  return r;
 }
 
-Lanes broadcast(double v) { return Lanes{v, v}; }
-Lanes sqrtLanes(Lanes v) {
-#if defined(__SSE2__)
-  return _mm_sqrt_pd(v);  // the baseline of x86-64; correctly rounded like std::sqrt
-#else
-  return Lanes{std::sqrt(v[0]), std::sqrt(v[1])};
-#endif
-}
-Lanes absLanes(Lanes v) { return maskLanes(LaneMask{} + 0x7fffffffffffffffLL, v); }  // clears the sign bit
-
-// segmentQuadrature with the density of the table D (D(h, |u0|), even in u0), two Gauss points at
-// a time: lanes over the points, no branch per point (a point beyond the cuts is masked to +0),
-// the lookups of both points interleaved (BicubicTable::evalPair). Each point's terms are those of
-// segmentQuadrature bit for bit, and they are added to the five sums in the rule's order, so the
-// result is the same to the last bit (an odd rule's last point runs in both lanes, added once).
 ContactPairResult tableQuadrature(const SegmentLineTable& table, const QuadratureRule& rule, double farCutDistance,
                                   const Segment& a, const Segment& b) {
-  PairFrame p;
-  if (!pairFrame(a, b, farCutDistance, &p)) return {};
-  const Lanes la = broadcast(a.halfLength), hCut2 = broadcast(table.hCut() * table.hCut());
-  const Lanes uCut = broadcast(table.uCut()), zero = broadcast(0.0), tiny = broadcast(1e-12);
-  const Lanes c = broadcast(p.c), f = broadcast(p.f), hA = broadcast(p.hA), hB = broadcast(p.hB), hC = broadcast(p.hC);
-  double energy = 0.0, sA = 0.0, sAs = 0.0, sB = 0.0, sBs = 0.0;
-  const std::size_t n = rule.x.size();
-  for (std::size_t q = 0; q < n; q += 2) {
-    const std::size_t q1 = q + 1 < n ? q + 1 : q;
-    const Lanes s = la * Lanes{rule.x[q], rule.x[q1]}, w = la * Lanes{rule.w[q], rule.w[q1]};
-    const Lanes u0 = f + s * c, h2 = hA + s * (hB + s * hC), u = absLanes(u0);
-    const LaneMask inside = (h2 < hCut2) & (u < uCut);
-    const Lanes h = sqrtLanes(h2 < zero ? zero : h2);
-    Lanes dh, du;
-    const Lanes d = table.evalPair(h, u, &dh, &du);
-    du = u0 < zero ? -du : du;
-    const Lanes alpha = h > tiny ? dh / h : zero, beta = du - alpha * u0, ws = w * s;
-    const Lanes tE = maskLanes(inside, w * d), tA = maskLanes(inside, w * alpha), tAs = maskLanes(inside, ws * alpha);
-    const Lanes tB = maskLanes(inside, w * beta), tBs = maskLanes(inside, ws * beta);
-    energy += tE[0], sA += tA[0], sAs += tAs[0], sB += tB[0], sBs += tBs[0];
-    if (q1 != q) energy += tE[1], sA += tA[1], sAs += tAs[1], sB += tB[1], sBs += tBs[1];
-  }
-  return pairResult(p, a, b, energy, sA, sAs, sB, sBs);
+  return segmentQuadrature(rule, a, b, table.hCut(), table.uCut(), farCutDistance,
+                           [&](double h, double u0, double* dh, double* du) {
+                             const double d = table.eval(h, std::abs(u0), dh, du);  // D is even in u0
+                             if (u0 < 0.0) *du = -*du;
+                             return d;
+                           });
 }
-
 // Weight 1 at v <= full, 0 at v >= zero: the quintic smoothstep (C2), and dweight/dv.
 double ramp(double v, double full, double zero, double* derivative) {
   *derivative = 0.0;
