@@ -3,8 +3,8 @@
 // is compiled twice on x86-64 with GCC or Clang: for the baseline the project builds for (SSE2,
 // no -march), and for AVX2, chosen at run time by the CPU. The AVX2 version executes the same
 // IEEE operations in the same order in their three-operand VEX forms (no FMA), so the two give
-// bit-identical results; the AVX2 one needs about a fifth fewer instructions
-// (docs/benchmarks.md, issue 16).
+// bit-identical results. The AVX2 loop needs a fifth fewer instructions, mostly register copies
+// that current cores eliminate anyway, so it saves far less time (docs/benchmarks.md, issue 16).
 namespace mesochain::mdem {
 
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
