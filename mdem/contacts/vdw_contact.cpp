@@ -1,9 +1,12 @@
 #include "mdem/contacts/vdw_contact.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
+
+#include "mdem/contacts/vdw_kernel_isa.hpp"
 
 namespace mesochain::mdem {
 
@@ -37,7 +40,7 @@ double closestDistance2(double c, double e, double f, double rr, double la, doub
 // so the loop over the points carries five scalar sums and no vectors.
 // `density(h, u0, &D_h, &D_u0)` returns D; points with h >= hCut or |u0| >= uCut add nothing.
 template <class Density>
-ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a, const Segment& b, double hCut,
+[[gnu::always_inline]] inline ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a, const Segment& b, double hCut,
                                     double uCut, double farCutDistance, Density density) {
   ContactPairResult r;
   const Vec3 r0 = a.centre - b.centre;
@@ -77,8 +80,9 @@ ContactPairResult segmentQuadrature(const QuadratureRule& rule, const Segment& a
   return r;
 }
 
-ContactPairResult tableQuadrature(const SegmentLineTable& table, const QuadratureRule& rule, double farCutDistance,
-                                  const Segment& a, const Segment& b) {
+[[gnu::always_inline]] inline ContactPairResult tableQuadratureBody(const SegmentLineTable& table,
+                                                                     const QuadratureRule& rule, double farCutDistance,
+                                                                     const Segment& a, const Segment& b) {
   return segmentQuadrature(rule, a, b, table.hCut(), table.uCut(), farCutDistance,
                            [&](double h, double u0, double* dh, double* du) {
                              const double d = table.eval(h, std::abs(u0), dh, du);  // D is even in u0
@@ -86,6 +90,34 @@ ContactPairResult tableQuadrature(const SegmentLineTable& table, const Quadratur
                              return d;
                            });
 }
+
+// The kernel's loop compiled twice (vdw_kernel_isa.hpp): for the x86-64 baseline (SSE2), and for
+// CPUs with AVX2, where the same SSE2 operations take their three-operand VEX forms (no register
+// copies; no FMA, which -mavx2 does not imply), so both give the same results bit for bit.
+ContactPairResult tableQuadratureBaseline(const SegmentLineTable& table, const QuadratureRule& rule,
+                                          double farCutDistance, const Segment& a, const Segment& b) {
+  return tableQuadratureBody(table, rule, farCutDistance, a, b);
+}
+#if MESOCHAIN_VDW_AVX2_CLONE
+[[gnu::target("avx2")]] ContactPairResult tableQuadratureAvx2(const SegmentLineTable& table, const QuadratureRule& rule,
+                                                              double farCutDistance, const Segment& a, const Segment& b) {
+  return tableQuadratureBody(table, rule, farCutDistance, a, b);
+}
+const bool kCpuHasAvx2 = (__builtin_cpu_init(), __builtin_cpu_supports("avx2") != 0);
+#else
+constexpr bool kCpuHasAvx2 = false;
+#endif
+std::atomic<bool> baselineForced{false};
+
+ContactPairResult tableQuadrature(const SegmentLineTable& table, const QuadratureRule& rule, double farCutDistance,
+                                  const Segment& a, const Segment& b) {
+#if MESOCHAIN_VDW_AVX2_CLONE
+  if (kCpuHasAvx2 && !baselineForced.load(std::memory_order_relaxed))
+    return tableQuadratureAvx2(table, rule, farCutDistance, a, b);
+#endif
+  return tableQuadratureBaseline(table, rule, farCutDistance, a, b);
+}
+
 // Weight 1 at v <= full, 0 at v >= zero: the quintic smoothstep (C2), and dweight/dv.
 double ramp(double v, double full, double zero, double* derivative) {
   *derivative = 0.0;
@@ -283,5 +315,11 @@ ContactPairResult IsotropicVdw::evaluate(const Vec3& centreA, const Vec3& centre
   res.forceB = -res.forceA;
   return res;
 }
+
+VdwKernelIsa vdwKernelIsa() {
+  return kCpuHasAvx2 && !baselineForced.load(std::memory_order_relaxed) ? VdwKernelIsa::Avx2 : VdwKernelIsa::Baseline;
+}
+
+void forceBaselineVdwKernel(bool on) { baselineForced.store(on, std::memory_order_relaxed); }
 
 }  // namespace mesochain::mdem
