@@ -4,12 +4,12 @@
 
 #include "common/units.hpp"
 #include "input/cell_input_file.hpp"
-#include "objective/core/cell_document.hpp"
-#include "objective/core/cell_file.hpp"
-#include "objective/core/gen_file.hpp"
-#include "objective/core/text_reader.hpp"
-#include "objective/core/xyz_file.hpp"
-#include "objective/core/xyz_settings.hpp"
+#include "input/cell_document.hpp"
+#include "input/cell_file.hpp"
+#include "input/gen_file.hpp"
+#include "input/text_reader.hpp"
+#include "input/xyz_file.hpp"
+#include "input/xyz_settings.hpp"
 #include "python/src/arrays.hpp"
 #include "python/src/bindings.hpp"
 

@@ -14,7 +14,7 @@
 #include "input/hsd/dftb_input.hpp"
 #include "input/hsd/dftbplus_units.hpp"
 #include "objective/core/uff_parameters.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 
 using namespace mesochain;
 using namespace mesochain::input::hsd;

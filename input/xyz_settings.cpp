@@ -1,4 +1,4 @@
-#include "objective/core/xyz_settings.hpp"
+#include "input/xyz_settings.hpp"
 
 #include <filesystem>
 

@@ -27,8 +27,6 @@ inline constexpr double kDefaultBondLengthAngstrom = 1.42;
 inline constexpr double kDefaultCollapseInterlayerAngstrom = 3.4;
 inline constexpr double kDefaultCollapseBulbRadiusAngstrom = 3.4;
 inline constexpr double kDefaultCollapseTransitionRadiusAngstrom = 3.4;
-// Atoms (and images) closer than this are an input error (Å).
-inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 
 // Defaults of model = "kc" (dftb/dispersion_kc.hpp): the bond graph's covalent cutoff (Å) and
 // the largest cutoff accepted (Å).

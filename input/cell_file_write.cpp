@@ -9,7 +9,7 @@
 #include "common/errors.hpp"
 #include "common/electronic_temperature.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::objective {
 

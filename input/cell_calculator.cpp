@@ -1,4 +1,4 @@
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 
 #include <utility>
 

@@ -1,4 +1,4 @@
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -14,17 +14,17 @@
 #include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_document.hpp"
-#include "objective/core/cell_file_sections.hpp"
-#include "objective/core/text_reader.hpp"
+#include "input/cell_document.hpp"
+#include "input/cell_file_sections.hpp"
+#include "input/text_reader.hpp"
 #include "common/toml_table.hpp"
 #include "objective/core/uff_parameters.hpp"
 
 #ifndef MESOCHAIN_PARAMS_DIR
-#error "MESOCHAIN_PARAMS_DIR must be defined (objective/core/CMakeLists.txt)"
+#error "MESOCHAIN_PARAMS_DIR must be defined (input/CMakeLists.txt)"
 #endif
 #ifndef MESOCHAIN_PROJECT_DIR
-#error "MESOCHAIN_PROJECT_DIR must be defined (objective/core/CMakeLists.txt)"
+#error "MESOCHAIN_PROJECT_DIR must be defined (input/CMakeLists.txt)"
 #endif
 
 namespace mesochain::objective {
