@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
-#include "objective/drivers/cell_calculator.hpp"
-#include "objective/drivers/scan_file.hpp"
+#include "input/cell_calculator.hpp"
+#include "input/scan_file.hpp"
 #include "workflows/knobs.hpp"
 
 namespace mesochain::app {

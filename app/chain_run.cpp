@@ -24,10 +24,10 @@
 #include "common/units.hpp"
 #include "mdem/cantilever_check.hpp"
 #include "mdem/scene_file.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/scan.hpp"
-#include "objective/drivers/scan_file.hpp"
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_file.hpp"
+#include "input/scan_output.hpp"
 #include "objective/drivers/scan_reference.hpp"
 #include "workflows/knobs.hpp"
 

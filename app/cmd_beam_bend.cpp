@@ -26,7 +26,7 @@
 #include "common/finite_output.hpp"
 #include "common/plot/png_io.hpp"
 #include "common/units.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 namespace mesochain::app {
 

@@ -22,7 +22,7 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 

@@ -13,7 +13,7 @@
 #include "common/atomic_file.hpp"
 #include "common/units.hpp"
 #include "input/cell_input_file.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::app {
 

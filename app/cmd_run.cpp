@@ -23,10 +23,10 @@
 #include "common/units.hpp"
 #include "dftb/calculator.hpp"
 #include "input/cell_input_file.hpp"
-#include "objective/core/cell_file.hpp"
-#include "objective/core/gen_file.hpp"
-#include "objective/core/xyz_file.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_file.hpp"
+#include "input/gen_file.hpp"
+#include "input/xyz_file.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {

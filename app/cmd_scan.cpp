@@ -20,10 +20,10 @@
 #include "common/errors.hpp"
 #include "common/plot/figure.hpp"
 #include "common/units.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/scan.hpp"
-#include "objective/drivers/scan_file.hpp"
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_file.hpp"
+#include "input/scan_output.hpp"
 
 namespace mesochain::app {
 

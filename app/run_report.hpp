@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dftb/calculator.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "objective/drivers/relax.hpp"
 
 namespace mesochain::app {

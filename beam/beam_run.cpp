@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <map>
 
 #include <fmt/format.h>
 #include <toml.hpp>
@@ -11,6 +10,7 @@
 #include "common/units.hpp"
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
+#include "common/toml_table.hpp"
 
 namespace mesochain::beam {
 
@@ -339,77 +339,38 @@ BeamRun runBeam(const BeamInputs& in) {
   return run;
 }
 
-namespace {
-
-double tomlNumber(const toml::value& v, const std::string& key, const std::string& path) {
-  const std::string where = fmt::format("key {} ({})", key, tomlWhere(v));
-  double x = 0.0;
-  if (v.is_integer()) x = static_cast<double>(v.as_integer());
-  else if (v.is_floating()) x = v.as_floating();
-  else throw InputError(path, where, "a " + std::string(v.is_string() ? "string" : "non-number"), "a number");
-  requireFinite(x, path, where);
-  return x;
-}
-
-}  // namespace
-
 void readConstantsFile(const std::string& path, BeamInputs& in) {
-  const toml::value root = parseTomlFile(path, "constants file");
+  const toml::value data = parseTomlFile(path, "constants file");
+  const TomlTable root(path, data, "");
   const double a2b = units::kAngstromInBohr, ev2ha = units::kEvInHartree;
-  // key -> (slot or special, factor to atomic units)
-  struct Key {
-    int slot;  // 0..3 constants; 10 T0, 11 atoms, 12 mass, 13 cells, 14 thickness, 15 format
-    double factor;
+  // Each quantity in any one of its units: key and factor to atomic units.
+  using Units = TomlTable::UnitKeys;
+  const Units stretch = {{"C_hartree", 1}, {"C_eV", ev2ha}};
+  const Units twist = {{"K_hartree_per_rad2", 1}, {"K_eV_per_rad2", ev2ha}};
+  const Units bendSoft = {{"D_soft_hartree_bohr2", 1}, {"D_soft_eV_angstrom2", ev2ha * a2b * a2b}};
+  const Units bendHard = {{"D_hard_hartree_bohr2", 1}, {"D_hard_eV_angstrom2", ev2ha * a2b * a2b}};
+  const Units cellLength = {{"T0_bohr", 1}, {"T0_angstrom", a2b}};
+  const Units cellMass = {{"cell_mass_dalton", 1}};
+  const Units thickness = {{"thickness_bohr", 1}, {"thickness_angstrom", a2b}};
+  std::vector<std::string> allowed = {"format", "atoms_per_cell", "cells_per_brick"};
+  for (const Units* q : {&stretch, &twist, &bendSoft, &bendHard, &cellLength, &cellMass, &thickness})
+    for (const auto& [key, factor] : *q) allowed.push_back(key);
+  root.allowOnly(allowed);
+  if (root.integer("format", "format = 1") != 1) root.fail("format", describe(root.at("format")), "format = 1");
+  auto quantity = [&](const Units& q) { return root.positiveQuantity(q); };
+  auto count = [&](const std::string& key, long long limit) -> std::optional<int> {
+    if (!root.has(key)) return std::nullopt;
+    return static_cast<int>(root.integerIn(key, 1, static_cast<long>(limit)));
   };
-  const std::map<std::string, Key> keys = {
-      {"format", {15, 1}},
-      {"C_hartree", {0, 1}}, {"C_eV", {0, ev2ha}},
-      {"K_hartree_per_rad2", {1, 1}}, {"K_eV_per_rad2", {1, ev2ha}},
-      {"D_soft_hartree_bohr2", {2, 1}}, {"D_soft_eV_angstrom2", {2, ev2ha * a2b * a2b}},
-      {"D_hard_hartree_bohr2", {3, 1}}, {"D_hard_eV_angstrom2", {3, ev2ha * a2b * a2b}},
-      {"T0_bohr", {10, 1}}, {"T0_angstrom", {10, a2b}},
-      {"atoms_per_cell", {11, 1}}, {"cell_mass_dalton", {12, 1}}, {"cells_per_brick", {13, 1}},
-      {"thickness_bohr", {14, 1}}, {"thickness_angstrom", {14, a2b}}};
-  if (!root.is_table()) throw InputError(path, "the top level", "not a table", "key = value lines");
-  std::array<std::string, 16> seen;
-  std::array<std::optional<GivenConstant>*, 4> target = {&in.stretch, &in.twist, &in.bendSoft, &in.bendHard};
-  bool format = false;
-  for (const auto& [k, v] : root.as_table()) {
-    const auto it = keys.find(k);
-    if (it == keys.end()) {
-      std::string list;
-      for (const auto& [name, _] : keys) list += (list.empty() ? "" : ", ") + name;
-      throw InputError(path, fmt::format("key {} ({})", k, tomlWhere(v)), "an unknown key",
-                       "one of " + list);
-    }
-    const Key key = it->second;
-    if (!seen[key.slot].empty())
-      throw InputError(path, "key " + k, "also " + seen[key.slot], "one key per quantity (one unit)");
-    seen[key.slot] = k;
-    const double x = tomlNumber(v, k, path) * key.factor;
-    const std::string where = fmt::format("key {} ({})", k, tomlWhere(v));
-    auto positive = [&] {
-      if (!(x > 0.0)) throw InputError(path, where, fmt::format("{:.6g}", x), "a value > 0");
-    };
-    auto integer = [&](long long limit) {
-      if (x != std::floor(x) || x < 1 || x > static_cast<double>(limit))
-        throw InputError(path, where, fmt::format("{:.6g}", x),
-                         fmt::format("an integer from 1 to {}", limit));
-    };
-    switch (key.slot) {
-      case 15:
-        if (x != 1.0) throw InputError(path, where, fmt::format("{:.6g}", x), "1");
-        format = true;
-        break;
-      case 10: positive(), in.cellLength = x; break;
-      case 11: integer(kMaxAtomsPerCell), in.atomsPerCell = static_cast<int>(x); break;
-      case 12: positive(), in.cellMass = x; break;
-      case 13: integer(kMaxCellsPerBrick), in.cellsPerBrick = static_cast<int>(x); break;
-      case 14: positive(), in.thickness = x; break;
-      default: positive(), *target[key.slot] = GivenConstant{x, 0.0, path};
-    }
-  }
-  if (!format) throw InputError(path, "key format", "nothing", "format = 1");
+  const std::array<std::pair<const Units*, std::optional<GivenConstant>*>, 4> constants = {
+      {{&stretch, &in.stretch}, {&twist, &in.twist}, {&bendSoft, &in.bendSoft}, {&bendHard, &in.bendHard}}};
+  for (const auto& [q, target] : constants)
+    if (const auto x = quantity(*q)) *target = GivenConstant{*x, 0.0, path};
+  if (const auto x = quantity(cellLength)) in.cellLength = x;
+  if (const auto x = quantity(cellMass)) in.cellMass = x;
+  if (const auto x = quantity(thickness)) in.thickness = x;
+  if (const auto n = count("atoms_per_cell", kMaxAtomsPerCell)) in.atomsPerCell = n;
+  if (const auto n = count("cells_per_brick", kMaxCellsPerBrick)) in.cellsPerBrick = *n;
 }
 
 }  // namespace mesochain::beam

@@ -11,6 +11,7 @@
 #include "beam/plate.hpp"
 #include "common/errors.hpp"
 #include "common/toml_file.hpp"
+#include "common/toml_table.hpp"
 #include "common/units.hpp"
 
 namespace mesochain::beam {
@@ -154,105 +155,58 @@ PlateRun runPlate(const PlateInputs& in) {
   return run;
 }
 
-void readPlateFile(const std::string& path, PlateInputs& in) {
-  const toml::value root = parseTomlFile(path, "plate file");
-  in.source = path;
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  auto where = [&](const std::string& key, const toml::value& v) {
-    return fmt::format("key {} ({})", key, tomlWhere(v));
-  };
-  auto number = [&](const std::string& key, const toml::value& v) {
-    double x = 0.0;
-    if (v.is_integer()) x = static_cast<double>(v.as_integer());
-    else if (v.is_floating()) x = v.as_floating();
-    else throw InputError(path, where(key, v), "a " + toml::stringize(v.type()), "a number");
-    requireFinite(x, path, where(key, v));
-    return x;
-  };
+namespace {
+
+// One [[stack]] table; `folder` resolves a relative scan path.
+PlateStack readPlateStack(const TomlTable& t, const std::filesystem::path& folder) {
   const double a2 = units::kAngstromInBohr * units::kAngstromInBohr, ev = units::kEvInHartree;
-  bool format = false, c2 = false, z0 = false, nu = false;
-  auto once = [&](bool& flag, const std::string& key, const toml::value& v) {
-    if (flag) throw InputError(path, where(key, v), "a second value for this quantity", "one key per quantity (one unit)");
-    flag = true;
-  };
-  bool d1 = false;
-  for (const auto& [key, v] : root.as_table()) {
-    if (key == "format") {
-      if (number(key, v) != 1.0) throw InputError(path, where(key, v), fmt::format("{}", number(key, v)), "1");
-      format = true;
-    } else if (key == "in_plane_stiffness_eV_per_angstrom2" || key == "in_plane_stiffness_N_per_m") {
-      once(c2, key, v);
-      const double x = number(key, v) * (key.ends_with("N_per_m") ? kNPerMInEvPerAngstrom2 : 1.0);
-      in.inPlaneStiffness = x * ev / a2;
-    } else if (key == "interlayer_spacing_angstrom" || key == "interlayer_spacing_bohr") {
-      once(z0, key, v);
-      in.spacing = number(key, v) * (key.ends_with("angstrom") ? units::kAngstromInBohr : 1.0);
-    } else if (key == "poisson_ratio") {
-      once(nu, key, v);
-      in.poisson = number(key, v);
-    } else if (key == "single_layer_rigidity_eV" || key == "single_layer_rigidity_hartree") {
-      once(d1, key, v);
-      in.singleLayer = GivenConstant{number(key, v) * (key.ends_with("eV") ? ev : 1.0), 0.0, path};
-    } else if (key == "max_layers") {
-      const double n = number(key, v);  // checked before narrowing (3e9 would wrap)
-      if (!(n >= 1 && n <= 1000) || n != std::floor(n))
-        throw InputError(path, where(key, v), fmt::format("{}", n), "an integer 1 <= max_layers <= 1000");
-      in.maxLayers = static_cast<int>(n);
-    } else if (key == "stack") {
-      if (!v.is_array()) throw InputError(path, where(key, v), "a " + toml::stringize(v.type()), "[[stack]] tables");
-      for (const toml::value& t : v.as_array()) {
-        if (!t.is_table()) throw InputError(path, where(key, t), "a " + toml::stringize(t.type()), "[[stack]] tables");
-        PlateStack s;
-        s.source = fmt::format("{} ([[stack]] at line {})", path, t.location().line());
-        bool hasLayers = false;
-        std::optional<double> sigma;
-        for (const auto& [k, x] : t.as_table()) {
-          if (k == "layers") {
-            const double n = number(k, x);
-            if (n != std::floor(n) || !(n >= 1 && n <= 1000))
-              throw InputError(path, where(k, x), fmt::format("{}", n), "an integer from 1 to 1000");
-            s.layers = static_cast<int>(n), hasLayers = true;
-          } else if (k == "scan") {
-            if (!x.is_string()) throw InputError(path, where(k, x), "a " + toml::stringize(x.type()), "a file name");
-            std::filesystem::path p(x.as_string().str);
-            if (p.is_relative()) p = folder / p;
-            s.scan = readScanTable(p.string());
-          } else if (k == "rigidity_eV" || k == "rigidity_hartree") {
-            if (s.rigidity) throw InputError(path, where(k, x), "a second rigidity", "one rigidity per stack");
-            s.rigidity = GivenConstant{number(k, x) * (k.ends_with("eV") ? ev : 1.0), 0.0, s.source};
-          } else if (k == "rigidity_uncertainty_eV") {
-            sigma = number(k, x) * ev;
-            if (*sigma < 0) throw InputError(path, where(k, x), fmt::format("{}", number(k, x)), "a value >= 0");
-          } else if (k == "interlayer_spacing_angstrom") {
-            s.spacing = number(k, x) * units::kAngstromInBohr;
-            if (!(*s.spacing > 0)) throw InputError(path, where(k, x), fmt::format("{}", number(k, x)), "a value > 0");
-          } else if (k == "area_per_cell_angstrom2") {
-            s.areaPerCell = number(k, x) * a2;
-            if (!(*s.areaPerCell > 0)) throw InputError(path, where(k, x), fmt::format("{}", number(k, x)), "a value > 0");
-          } else {
-            throw InputError(path, where(k, x), "an unknown key in [[stack]]",
-                             "layers, scan, rigidity_eV | rigidity_hartree, rigidity_uncertainty_eV, area_per_cell_angstrom2, "
-                             "interlayer_spacing_angstrom");
-          }
-        }
-        if (!hasLayers) throw InputError(s.source, "key layers", "nothing", "layers = N");
-        if (sigma) {
-          if (!s.rigidity) throw InputError(s.source, "key rigidity_uncertainty_eV", "no rigidity_eV", "an uncertainty with a given rigidity");
-          s.rigidity->uncertainty = *sigma;
-        }
-        in.stacks.push_back(std::move(s));
-      }
-    } else {
-      throw InputError(path, where(key, v), "an unknown key",
-                       "format, in_plane_stiffness_eV_per_angstrom2 | in_plane_stiffness_N_per_m, "
-                       "interlayer_spacing_angstrom | interlayer_spacing_bohr, poisson_ratio, "
-                       "single_layer_rigidity_eV | single_layer_rigidity_hartree, max_layers, [[stack]]");
-    }
+  t.allowOnly({"layers", "scan", "rigidity_eV", "rigidity_hartree", "rigidity_uncertainty_eV",
+               "area_per_cell_angstrom2", "interlayer_spacing_angstrom"});
+  PlateStack s;
+  s.source = fmt::format("{} ([[stack]] at line {})", t.source(), t.line("layers"));
+  s.layers = static_cast<int>(t.integerIn("layers", 1, 1000));
+  if (t.has("scan")) {
+    std::filesystem::path p(t.string("scan", "a file name"));
+    if (p.is_relative()) p = folder / p;
+    s.scan = readScanTable(p.string());
   }
-  if (!format) throw InputError(path, "key format", "nothing", "format = 1");
-  if (!c2) throw InputError(path, "key in_plane_stiffness_eV_per_angstrom2", "nothing", "C2, the in-plane stiffness per layer");
-  if (!z0) throw InputError(path, "key interlayer_spacing_angstrom", "nothing", "Z0, the interlayer spacing");
-  if (!nu) throw InputError(path, "key poisson_ratio", "nothing", "nu (0 when C2 is already the plane-strain stiffness)");
+  if (const auto x = t.quantity({{"rigidity_eV", ev}, {"rigidity_hartree", 1.0}}))
+    s.rigidity = GivenConstant{*x, 0.0, s.source};
+  if (t.has("rigidity_uncertainty_eV")) {
+    if (!s.rigidity) t.fail("rigidity_uncertainty_eV", "no rigidity_eV", "an uncertainty with a given rigidity");
+    s.rigidity->uncertainty = t.nonNegativeOr("rigidity_uncertainty_eV", 0.0, "a value >= 0") * ev;
+  }
+  if (t.has("interlayer_spacing_angstrom"))
+    s.spacing = t.positive("interlayer_spacing_angstrom", "a value > 0") * units::kAngstromInBohr;
+  if (t.has("area_per_cell_angstrom2")) s.areaPerCell = t.positive("area_per_cell_angstrom2", "a value > 0") * a2;
+  return s;
+}
+
+}  // namespace
+
+void readPlateFile(const std::string& path, PlateInputs& in) {
+  const toml::value data = parseTomlFile(path, "plate file");
+  const TomlTable root(path, data, "");
+  in.source = path;
+  root.allowOnly({"format", "in_plane_stiffness_eV_per_angstrom2", "in_plane_stiffness_N_per_m",
+                  "interlayer_spacing_angstrom", "interlayer_spacing_bohr", "poisson_ratio",
+                  "single_layer_rigidity_eV", "single_layer_rigidity_hartree", "max_layers", "stack"});
+  const double a2 = units::kAngstromInBohr * units::kAngstromInBohr, ev = units::kEvInHartree;
+  if (root.integer("format", "format = 1") != 1) root.fail("format", describe(root.at("format")), "format = 1");
+  const auto c2 = root.quantity({{"in_plane_stiffness_eV_per_angstrom2", 1.0},
+                                 {"in_plane_stiffness_N_per_m", kNPerMInEvPerAngstrom2}});
+  if (!c2) root.missing("in_plane_stiffness_eV_per_angstrom2", "C2, the in-plane stiffness per layer");
+  in.inPlaneStiffness = *c2 * ev / a2;
+  const auto z0 = root.quantity({{"interlayer_spacing_angstrom", units::kAngstromInBohr}, {"interlayer_spacing_bohr", 1.0}});
+  if (!z0) root.missing("interlayer_spacing_angstrom", "Z0, the interlayer spacing");
+  in.spacing = *z0;
+  in.poisson = root.number("poisson_ratio", "nu (0 when C2 is already the plane-strain stiffness)");
+  if (const auto d1 = root.quantity({{"single_layer_rigidity_eV", ev}, {"single_layer_rigidity_hartree", 1.0}}))
+    in.singleLayer = GivenConstant{*d1, 0.0, path};
+  if (root.has("max_layers")) in.maxLayers = static_cast<int>(root.integerIn("max_layers", 1, 1000));
+  if (root.has("stack"))
+    for (const TomlTable& t : root.tables("stack"))
+      in.stacks.push_back(readPlateStack(t, std::filesystem::path(path).parent_path()));
 }
 
 }  // namespace mesochain::beam

@@ -1,11 +1,11 @@
 #pragma once
 // Default parameter paths of the benchmarks: the pbc-0-3 set found where `[parameters] set`
 // finds it (MESOCHAIN_PARAMS_PATH, the installed params beside the binary, the source tree;
-// objective/core/cell_file.hpp), so an installed binary runs them without the source tree.
+// input/cell_file.hpp), so an installed binary runs them without the source tree.
 #include <filesystem>
 #include <string>
 
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::app {
 

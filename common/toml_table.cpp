@@ -154,6 +154,136 @@ bool TomlTable::boolean(const std::string& key, const std::string& expected) con
   return v.as_boolean();
 }
 
+double TomlTable::positive(const std::string& key, const std::string& expected) const {
+  const double x = number(key, expected);
+  if (!(x > 0.0)) fail(key, describe(at(key)), expected);
+  return x;
+}
+
+long TomlTable::integerIn(const std::string& key, long lo, long hi) const {
+  const std::string expected = fmt::format("an integer from {} to {}", lo, hi);
+  const long n = integer(key, expected);
+  if (n < lo || n > hi) fail(key, describe(at(key)), expected);
+  return n;
+}
+
+std::vector<double> TomlTable::numbers(const std::string& key) const {
+  const std::string expected = "an array of finite numbers";
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, describe(v), expected);
+  std::vector<double> out;
+  for (const toml::value& e : v.as_array()) {
+    const auto x = asNumber(e);
+    if (!x) fail(key, "an array holding " + describe(e), expected);
+    if (!std::isfinite(*x)) fail(key, "an array holding a non-finite number", expected);
+    out.push_back(*x);
+  }
+  return out;
+}
+
+std::vector<long> TomlTable::integers(const std::string& key) const {
+  const std::string expected = "an array of integers";
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, describe(v), expected);
+  std::vector<long> out;
+  for (const toml::value& e : v.as_array()) {
+    if (!e.is_integer()) fail(key, "an array holding " + describe(e), expected);
+    out.push_back(static_cast<long>(e.as_integer()));
+  }
+  return out;
+}
+
+std::vector<std::string> TomlTable::strings(const std::string& key) const {
+  const std::string expected = "an array of strings";
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, describe(v), expected);
+  std::vector<std::string> out;
+  for (const toml::value& e : v.as_array()) {
+    if (!e.is_string()) fail(key, "an array holding " + describe(e), expected);
+    out.push_back(e.as_string().str);
+  }
+  return out;
+}
+
+Eigen::Vector3d TomlTable::vec3(const std::string& key, const std::string& expected) const {
+  if (!has(key)) missing(key, expected);
+  if (!at(key).is_array()) fail(key, describe(at(key)), expected);
+  const std::vector<double> x = numbers(key);
+  if (x.size() != 3) fail(key, fmt::format("{} numbers", x.size()), expected);
+  return {x[0], x[1], x[2]};
+}
+
+double TomlTable::numberOr(const std::string& key, double fallback, const std::string& expected) const {
+  return has(key) ? number(key, expected) : fallback;
+}
+
+long TomlTable::integerOr(const std::string& key, long fallback, const std::string& expected) const {
+  return has(key) ? integer(key, expected) : fallback;
+}
+
+std::string TomlTable::stringOr(const std::string& key, const std::string& fallback,
+                                const std::string& expected) const {
+  return has(key) ? string(key, expected) : fallback;
+}
+
+bool TomlTable::booleanOr(const std::string& key, bool fallback, const std::string& expected) const {
+  return has(key) ? boolean(key, expected) : fallback;
+}
+
+double TomlTable::nonNegativeOr(const std::string& key, double fallback, const std::string& expected) const {
+  if (!has(key)) return fallback;
+  const double x = number(key, expected);
+  if (x < 0.0) fail(key, describe(at(key)), expected);
+  return x;
+}
+
+Eigen::Vector3d TomlTable::vec3Or(const std::string& key, const Eigen::Vector3d& fallback) const {
+  return has(key) ? vec3(key) : fallback;
+}
+
+std::optional<double> TomlTable::quantity(const UnitKeys& units, const std::string& expected) const {
+  std::optional<double> x;
+  std::string given;
+  for (const auto& [key, factor] : units) {
+    if (!has(key)) continue;
+    if (x) fail(key, "also " + given, "one key per quantity (one unit)");
+    x = number(key, expected) * factor;
+    given = key;
+  }
+  return x;
+}
+
+std::optional<double> TomlTable::positiveQuantity(const UnitKeys& units, const std::string& expected) const {
+  for (const auto& [key, factor] : units)
+    if (has(key)) positive(key, expected);
+  return quantity(units, expected);
+}
+
+bool TomlTable::isString(const std::string& key) const { return has(key) && at(key).is_string(); }
+
+TomlTable TomlTable::requireTable(const std::string& key) const {
+  const std::string expected = "a table [" + dotted(key) + "]";
+  if (!has(key)) missing(key, expected);
+  return *table(key);
+}
+
+std::vector<TomlTable> TomlTable::tables(const std::string& key) const {
+  const std::string expected = "an array of tables [[" + dotted(key) + "]]";
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, describe(v), expected);
+  std::vector<TomlTable> out;
+  const auto& items = v.as_array();
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (!items[i].is_table()) fail(key, "an array holding " + describe(items[i]), expected);
+    out.emplace_back(source_, items[i], fmt::format("{}[{}]", dotted(key), i));
+  }
+  return out;
+}
+
 std::optional<TomlTable> TomlTable::table(const std::string& key) const {
   if (!has(key)) return std::nullopt;
   const toml::value& v = at(key);

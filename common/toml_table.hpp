@@ -1,13 +1,14 @@
 #pragma once
 // Strict access to one table of a TOML input (toml11 v3): every error is an InputError naming
-// the file, the dotted key and its line, what was found and what was expected. The reader of the
-// cell, scan and skgen formats (objective/core/cell_file*, objective/drivers/scan_file,
-// skgen/skgen_job); the files themselves are read by common/toml_file.hpp. (mdem's scene and
-// model files still have their own reader, mdem/toml_reader.hpp: issue 13 item 3.)
+// the file, the dotted key and its line, what was found and what was expected. The one table
+// reader of every TOML format (cell, scan, skgen, mdem scene and model, beam constants, plate);
+// the files themselves are read by common/toml_file.hpp.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <Eigen/Core>
 #include <toml.hpp>
 
 namespace mesochain {
@@ -34,18 +35,64 @@ class TomlTable {
                          const std::string& expected) const;
   [[noreturn]] void missing(const std::string& key, const std::string& expected) const;
 
-  // Typed access. A number may be written as an integer or a float; it must be finite.
-  double number(const std::string& key, const std::string& expected) const;
-  long integer(const std::string& key, const std::string& expected) const;
-  std::string string(const std::string& key, const std::string& expected) const;
-  bool boolean(const std::string& key, const std::string& expected) const;
-  std::optional<TomlTable> table(const std::string& key) const;  // absent -> nullopt
+  // Typed access to a required key; `expected` is what the message asks for. A number may be
+  // written as an integer or a float; it must be finite.
+  double number(const std::string& key, const std::string& expected = "a number") const;
+  long integer(const std::string& key, const std::string& expected = "an integer") const;
+  std::string string(const std::string& key, const std::string& expected = "a string") const;
+  bool boolean(const std::string& key, const std::string& expected = "true or false") const;
+  double positive(const std::string& key, const std::string& expected = "a positive number") const;
+  long integerIn(const std::string& key, long lo, long hi) const;  // "an integer from lo to hi"
+  // [x, y, z]: three finite numbers.
+  Eigen::Vector3d vec3(const std::string& key, const std::string& expected = "3 numbers [x, y, z]") const;
+  // Arrays of one type (every element checked).
+  std::vector<double> numbers(const std::string& key) const;
+  std::vector<long> integers(const std::string& key) const;
+  std::vector<std::string> strings(const std::string& key) const;
+
+  // The same for an optional key: `fallback` when it is absent.
+  double numberOr(const std::string& key, double fallback, const std::string& expected = "a number") const;
+  long integerOr(const std::string& key, long fallback, const std::string& expected = "an integer") const;
+  std::string stringOr(const std::string& key, const std::string& fallback,
+                       const std::string& expected = "a string") const;
+  bool booleanOr(const std::string& key, bool fallback, const std::string& expected = "true or false") const;
+  double nonNegativeOr(const std::string& key, double fallback,
+                       const std::string& expected = "a number >= 0") const;
+  Eigen::Vector3d vec3Or(const std::string& key, const Eigen::Vector3d& fallback) const;
+  bool isString(const std::string& key) const;  // present and a string
+
+  // A quantity that may be given in one of several units: {key, factor to the internal unit}
+  // per unit. At most one of the keys may be present ("one key per quantity"); the value times
+  // its factor, or nullopt when none is given. `positiveQuantity` also requires a value > 0.
+  using UnitKeys = std::vector<std::pair<std::string, double>>;
+  std::optional<double> quantity(const UnitKeys& units, const std::string& expected = "a number") const;
+  std::optional<double> positiveQuantity(const UnitKeys& units, const std::string& expected = "a value > 0") const;
+
+  // Sub-tables: `table` is nullopt when absent, `requireTable` fails then; `tables` reads an
+  // array of tables ([[key]]), named key[0], key[1], ... in messages.
+  std::optional<TomlTable> table(const std::string& key) const;
+  TomlTable requireTable(const std::string& key) const;
+  std::vector<TomlTable> tables(const std::string& key) const;
 
  private:
   std::string source_;
   const toml::value* table_;
   std::string name_;
 };
+
+// Index of the entry of `types` (anything with a `name`, e.g. mdem's element or bond types) that
+// the string at `key` names; an InputError listing the defined names otherwise.
+template <class Types>
+int findNamed(const Types& types, const TomlTable& t, const std::string& key) {
+  const std::string n = t.string(key);
+  std::string list;
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (types[i].name == n) return static_cast<int>(i);
+    list += (list.empty() ? "" : ", ") + types[i].name;
+  }
+  t.fail(key, "\"" + n + "\"",
+         list.empty() ? "a defined type (none is defined)" : "one of the defined types: " + list);
+}
 
 // "a string", "an integer", ... for messages; `describe` also shows short values.
 std::string typeName(const toml::value& v);

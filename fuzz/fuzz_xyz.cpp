@@ -1,6 +1,6 @@
-// Fuzz target: the extended-XYZ reader (objective/core/xyz_file.hpp).
+// Fuzz target: the extended-XYZ reader (input/xyz_file.hpp).
 #include "fuzz/fuzz_input.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = mesochain::fuzz::writeScratch(data, size, ".xyz");

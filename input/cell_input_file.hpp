@@ -1,9 +1,9 @@
 #pragma once
 // The objective-cell settings from any input format mesochain reads: a DFTB+ input (a file
-// ending in .hsd, input/hsd/dftb_input.hpp) or a cell file (TOML, objective/core/cell_file.hpp).
+// ending in .hsd, input/hsd/dftb_input.hpp) or a cell file (TOML, input/cell_file.hpp).
 #include <string>
 
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::input {
 

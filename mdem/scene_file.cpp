@@ -8,11 +8,12 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/toml_file.hpp"
 #include "mdem/checkpoint.hpp"
 #include "mdem/compression.hpp"
 #include "mdem/contacts/contact_file.hpp"
 #include "mdem/tensile.hpp"
-#include "mdem/toml_reader.hpp"
+#include "common/toml_table.hpp"
 #include "mdem/units.hpp"
 
 namespace mesochain::mdem {
@@ -48,7 +49,7 @@ ElementType readElementType(const TomlTable& t) {
   // The name is a column of the extended XYZ trajectory (type_name) and of VTK: one word.
   if (e.name.empty() || e.name.find_first_of(" \t\n\r\"'") != std::string::npos)
     t.fail("name", "\"" + e.name + "\"", "a name without spaces or quotes (e.g. collapsed_cnt)");
-  const std::string shape = t.string("shape", "brick");
+  const std::string shape = t.stringOr("shape", "brick");
   if (shape == "brick") {
     e.shape = Shape::Brick;
     e.thickness = t.positive("thickness_nm");
@@ -111,8 +112,8 @@ void readElements(const TomlTable& root, Scene& s) {
     const int type = findNamed(s.elementTypes, t, "type");
     s.bodies.add(type, s.elementTypes[type], t.vec3("position_nm"), readOrientation(t));
     const int i = s.bodies.size() - 1;
-    s.bodies.velocity[i] = t.vec3("velocity_nm_per_ns", Vec3::Zero());
-    s.bodies.setAngularVelocityWorld(i, t.vec3("angular_velocity_rad_per_ns", Vec3::Zero()));
+    s.bodies.velocity[i] = t.vec3Or("velocity_nm_per_ns", Vec3::Zero());
+    s.bodies.setAngularVelocityWorld(i, t.vec3Or("angular_velocity_rad_per_ns", Vec3::Zero()));
   }
 }
 
@@ -131,10 +132,10 @@ void readFilaments(const TomlTable& root, Scene& s) {
       t.fail("count", std::to_string(n),
              fmt::format("1 to {} elements (at most {} in a scene)", kMaxElements - s.bodies.size(), kMaxElements));
     f.count = static_cast<int>(n);
-    f.start = t.vec3("start_nm", Vec3::Zero());
-    f.direction = t.vec3("direction", Vec3::UnitZ());
+    f.start = t.vec3Or("start_nm", Vec3::Zero());
+    f.direction = t.vec3Or("direction", Vec3::UnitZ());
     if (f.direction.norm() < 1e-12) t.fail("direction", "a zero vector", "a direction");
-    f.thicknessAxis = t.vec3("thickness_axis", Vec3::UnitX());
+    f.thicknessAxis = t.vec3Or("thickness_axis", Vec3::UnitX());
     if (t.has("spacing_nm")) f.spacing = t.positive("spacing_nm");
     addFilament(s, f);
   }
@@ -178,13 +179,13 @@ void readBoundary(const TomlTable& root, Scene& s) {
       t.allowOnly({"element", "force_pN", "moment_pN_nm", "frame", "ramp_ns"});
       Load l;
       l.element = oneElement(t, n);
-      l.force = t.vec3("force_pN", Vec3::Zero());
-      l.moment = t.vec3("moment_pN_nm", Vec3::Zero());
-      const std::string frame = t.string("frame", "fixed");
+      l.force = t.vec3Or("force_pN", Vec3::Zero());
+      l.moment = t.vec3Or("moment_pN_nm", Vec3::Zero());
+      const std::string frame = t.stringOr("frame", "fixed");
       if (frame != "fixed" && frame != "following")
         t.fail("frame", "\"" + frame + "\"", "\"fixed\" or \"following\"");
       l.following = frame == "following";
-      l.ramp = t.nonNegative("ramp_ns", 0.0);
+      l.ramp = t.nonNegativeOr("ramp_ns", 0.0);
       s.boundary.loads.push_back(l);
     }
   }
@@ -198,14 +199,14 @@ void readBoundary(const TomlTable& root, Scene& s) {
         p.duration = t.positive("duration_ns");
         for (const char* k : {"velocity_nm_per_ns", "angular_velocity_rad_per_ns", "ramp_ns"})
           if (t.has(k)) t.fail(k, "a velocity-mode key with duration_ns", "translate_by_nm / rotate_by_rad");
-        p.translateBy = t.vec3("translate_by_nm", Vec3::Zero());
-        p.rotateBy = t.vec3("rotate_by_rad", Vec3::Zero());
+        p.translateBy = t.vec3Or("translate_by_nm", Vec3::Zero());
+        p.rotateBy = t.vec3Or("rotate_by_rad", Vec3::Zero());
       } else {
         for (const char* k : {"translate_by_nm", "rotate_by_rad"})
           if (t.has(k)) t.fail(k, "a displacement without duration_ns", "duration_ns as well");
-        p.velocity = t.vec3("velocity_nm_per_ns", Vec3::Zero());
-        p.angularVelocity = t.vec3("angular_velocity_rad_per_ns", Vec3::Zero());
-        p.ramp = t.nonNegative("ramp_ns", 0.0);
+        p.velocity = t.vec3Or("velocity_nm_per_ns", Vec3::Zero());
+        p.angularVelocity = t.vec3Or("angular_velocity_rad_per_ns", Vec3::Zero());
+        p.ramp = t.nonNegativeOr("ramp_ns", 0.0);
       }
       s.boundary.prescribed.push_back(p);
     }
@@ -249,7 +250,7 @@ void readOuterStep(const TomlTable& run, Scene& s) {
 }
 
 void readRunAndOutput(const TomlTable& root, Scene& s) {
-  const TomlTable run = root.table("run");
+  const TomlTable run = root.requireTable("run");
   run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "stop_kinetic_energy_zJ",
                  "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
@@ -265,27 +266,27 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   s.run.steps = root.has("stages") && !run.has("steps") ? 0 : run.integer("steps");
   if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
   s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;
-  s.run.checkEvery = run.integer("check_every", 100);
+  s.run.checkEvery = run.integerOr("check_every", 100);
   if (s.run.checkEvery < 1) run.fail("check_every", std::to_string(s.run.checkEvery), "at least 1");
-  s.run.minimumSteps = run.integer("minimum_steps", 0);
+  s.run.minimumSteps = run.integerOr("minimum_steps", 0);
   if (!root.has("output")) return;
-  const TomlTable out = root.table("output");
+  const TomlTable out = root.requireTable("output");
   out.allowOnly({"directory", "energies_csv", "energies_every", "xyz", "vtk_prefix",
                  "frames_every", "probes", "plot_png", "checkpoint", "checkpoint_every", "checkpoint_minutes"});
-  s.output.directory = out.string("directory", ".");
-  s.output.energiesCsv = out.string("energies_csv", "");
-  s.output.energiesEvery = out.integer("energies_every", 100);
-  s.output.xyz = out.string("xyz", "");
-  s.output.vtkPrefix = out.string("vtk_prefix", "");
-  s.output.framesEvery = out.integer("frames_every", 1000);
-  s.output.plotPng = out.string("plot_png", "");
+  s.output.directory = out.stringOr("directory", ".");
+  s.output.energiesCsv = out.stringOr("energies_csv", "");
+  s.output.energiesEvery = out.integerOr("energies_every", 100);
+  s.output.xyz = out.stringOr("xyz", "");
+  s.output.vtkPrefix = out.stringOr("vtk_prefix", "");
+  s.output.framesEvery = out.integerOr("frames_every", 1000);
+  s.output.plotPng = out.stringOr("plot_png", "");
   for (const char* k : {"energies_every", "frames_every"})
-    if (out.integer(k, 1) < 1) out.fail(k, std::to_string(out.integer(k)), "at least 1");
-  s.output.checkpoint = out.string("checkpoint", s.output.checkpoint);
+    if (out.integerOr(k, 1) < 1) out.fail(k, std::to_string(out.integer(k)), "at least 1");
+  s.output.checkpoint = out.stringOr("checkpoint", s.output.checkpoint);
   if (s.output.checkpoint.empty()) out.fail("checkpoint", "an empty name", "a file name for the checkpoints");
-  s.output.checkpointEvery = out.integer("checkpoint_every", 0);
+  s.output.checkpointEvery = out.integerOr("checkpoint_every", 0);
   if (s.output.checkpointEvery < 0) out.fail("checkpoint_every", std::to_string(s.output.checkpointEvery), "a number of steps >= 0 (0: not by steps)");
-  s.output.checkpointMinutes = out.nonNegative("checkpoint_minutes", s.output.checkpointMinutes);
+  s.output.checkpointMinutes = out.nonNegativeOr("checkpoint_minutes", s.output.checkpointMinutes);
   if (out.has("probes"))
     for (long p : out.integers("probes"))
       s.output.probes.push_back(elementIndex(p, s.bodies.size(), out, "probes"));
@@ -296,19 +297,19 @@ void readTensileTable(const TomlTable& t, TensileSpec& ts) {
   t.allowOnly({"axis", "grip_width_nm", "strain_rate_per_ns", "ramp_ns", "cross_section_nm2", "contact_gap_nm",
                "aligned_angle_deg", "csv", "plot_png", "final_strain"});
   ts.enabled = true;
-  const std::string axis = t.string("axis", "x");
+  const std::string axis = t.stringOr("axis", "x");
   if (axis != "x" && axis != "y") t.fail("axis", "\"" + axis + "\"", "\"x\" or \"y\" (in the film plane)");
   ts.axis = axis == "x" ? 0 : 1;
   ts.gripWidth = t.positive("grip_width_nm");
   ts.strainRate = t.positive("strain_rate_per_ns");
-  ts.ramp = t.nonNegative("ramp_ns", 0.0);
+  ts.ramp = t.nonNegativeOr("ramp_ns", 0.0);
   ts.crossSection = t.has("cross_section_nm2") ? t.positive("cross_section_nm2") : 0.0;
-  ts.contactGap = t.nonNegative("contact_gap_nm", 0.5);
-  ts.alignedAngle = t.number("aligned_angle_deg", 10.0) * units::kPi / 180.0;
+  ts.contactGap = t.nonNegativeOr("contact_gap_nm", 0.5);
+  ts.alignedAngle = t.numberOr("aligned_angle_deg", 10.0) * units::kPi / 180.0;
   if (ts.alignedAngle < 0.0 || ts.alignedAngle > 0.5 * units::kPi)
     t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
-  ts.csv = t.string("csv", ts.csv);
-  ts.png = t.string("plot_png", "");
+  ts.csv = t.stringOr("csv", ts.csv);
+  ts.png = t.stringOr("plot_png", "");
   ts.finalStrain = t.has("final_strain") ? t.positive("final_strain") : 0.0;
 }
 
@@ -316,7 +317,7 @@ void readCompressionTable(const TomlTable& t, CompressionSpec& c) {
   t.allowOnly({"cycles", "max_strain", "strain_rate_per_ns", "plate_speed_nm_per_ns", "hold_ns", "wall_gap_nm",
                "wall_stiffness_pN_per_nm2", "quadrature_points", "area_nm2", "csv", "cycles_csv", "plot_png"});
   c.enabled = true;
-  c.cycles = static_cast<int>(t.integer("cycles", 1));
+  c.cycles = static_cast<int>(t.integerOr("cycles", 1));
   if (c.cycles < 1) t.fail("cycles", std::to_string(c.cycles), "at least 1 cycle");
   c.maxStrain = t.positive("max_strain");
   if (c.maxStrain >= 1.0) t.fail("max_strain", fmt::format("{}", c.maxStrain), "a compressive strain in (0, 1)");
@@ -325,22 +326,22 @@ void readCompressionTable(const TomlTable& t, CompressionSpec& c) {
            "exactly one of strain_rate_per_ns, plate_speed_nm_per_ns");
   if (t.has("strain_rate_per_ns")) c.strainRate = t.positive("strain_rate_per_ns");
   if (t.has("plate_speed_nm_per_ns")) c.plateSpeed = t.positive("plate_speed_nm_per_ns");
-  c.holdTime = t.nonNegative("hold_ns", 0.0);
+  c.holdTime = t.nonNegativeOr("hold_ns", 0.0);
   c.wallGap = t.has("wall_gap_nm") ? t.positive("wall_gap_nm") : c.wallGap;
   c.stiffness = t.has("wall_stiffness_pN_per_nm2") ? t.positive("wall_stiffness_pN_per_nm2") : 0.0;
-  c.quadraturePoints = static_cast<int>(t.integer("quadrature_points", c.quadraturePoints));
+  c.quadraturePoints = static_cast<int>(t.integerOr("quadrature_points", c.quadraturePoints));
   if (c.quadraturePoints < 1 || c.quadraturePoints > 32)
     t.fail("quadrature_points", std::to_string(c.quadraturePoints), "1 to 32 Gauss points along an element");
   c.area = t.has("area_nm2") ? t.positive("area_nm2") : 0.0;
-  c.csv = t.string("csv", c.csv);
-  c.cyclesCsv = t.string("cycles_csv", c.cyclesCsv);
-  c.png = t.string("plot_png", "");
+  c.csv = t.stringOr("csv", c.csv);
+  c.cyclesCsv = t.stringOr("cycles_csv", c.cyclesCsv);
+  c.png = t.stringOr("plot_png", "");
 }
 
 // [[stages]] (docs/scene-file.md): [run] keeps the time step; its steps and stop keys move to
 // the stages.
 void readStages(const TomlTable& root, Scene& s) {
-  const TomlTable run = root.table("run");
+  const TomlTable run = root.requireTable("run");
   for (const char* k : {"steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps"})
     if (run.has(k)) run.fail(k, "a [run] stop key beside [[stages]]", "the key in each stage (the time step stays in [run])");
   if (!s.output.energiesCsv.empty() || !s.output.plotPng.empty())
@@ -353,7 +354,7 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.name.empty()) t.fail("name", "an empty name", "a stage name (used in file names and messages)");
     for (const StageSpec& o : s.stages)
       if (o.name == st.name) t.fail("name", "\"" + st.name + "\" given twice", "a name of its own for each stage");
-    const std::string kind = t.string("kind", "relax");
+    const std::string kind = t.stringOr("kind", "relax");
     if (kind != "relax" && kind != "tensile" && kind != "compression")
       t.fail("kind", "\"" + kind + "\"", "\"relax\", \"tensile\" or \"compression\"");
     st.tensileStage = kind == "tensile";
@@ -361,9 +362,9 @@ void readStages(const TomlTable& root, Scene& s) {
     st.steps = t.integer("steps");
     if (st.steps < 1) t.fail("steps", std::to_string(st.steps), "at least 1 step");
     st.stopKineticEnergy = t.has("stop_kinetic_energy_zJ") ? t.positive("stop_kinetic_energy_zJ") : -1.0;
-    st.checkEvery = t.integer("check_every", 100);
+    st.checkEvery = t.integerOr("check_every", 100);
     if (st.checkEvery < 1) t.fail("check_every", std::to_string(st.checkEvery), "at least 1");
-    st.minimumSteps = t.integer("minimum_steps", 0);
+    st.minimumSteps = t.integerOr("minimum_steps", 0);
     if (t.has("add_effects")) st.addEffects = t.strings("add_effects");
     for (const std::string& e : st.addEffects) {
       if (std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end())
@@ -373,16 +374,16 @@ void readStages(const TomlTable& root, Scene& s) {
       if (e != "local_damping" && e != "viscous_damping")
         t.fail("add_effects", "\"" + e + "\"", "\"local_damping\" or \"viscous_damping\" (other effects are named in effects, for every stage)");
     }
-    st.energiesCsv = t.string("energies_csv", st.name + "-energies.csv");
-    st.energiesEvery = t.integer("energies_every", 100);
+    st.energiesCsv = t.stringOr("energies_csv", st.name + "-energies.csv");
+    st.energiesEvery = t.integerOr("energies_every", 100);
     if (st.energiesEvery < 1) t.fail("energies_every", std::to_string(st.energiesEvery), "at least 1");
-    st.plotPng = t.string("plot_png", "");
+    st.plotPng = t.stringOr("plot_png", "");
     if (st.tensileStage != t.has("tensile"))
       t.fail("tensile", st.tensileStage ? "a tensile stage without its [stages.tensile] table" : "a [stages.tensile] table in a " + kind + " stage",
              "kind = \"tensile\" with its table, or neither");
     if (st.tensileStage) {
       st.tensile.csv = st.name + "-tensile.csv";
-      readTensileTable(t.table("tensile"), st.tensile);
+      readTensileTable(t.requireTable("tensile"), st.tensile);
     }
     if (st.compressionStage != t.has("compression"))
       t.fail("compression",
@@ -391,7 +392,7 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.compressionStage) {
       st.compression.csv = st.name + "-compression.csv";
       st.compression.cyclesCsv = st.name + "-cycles.csv";
-      readCompressionTable(t.table("compression"), st.compression);
+      readCompressionTable(t.requireTable("compression"), st.compression);
     }
     s.stages.push_back(std::move(st));
   }
@@ -408,7 +409,7 @@ void readModelTables(const TomlTable& root, Scene& s) {
 
 Scene loadScene(const std::string& path) {
   const toml::value data = parseTomlFile(path, "scene file");
-  const TomlTable root(data, path, "");
+  const TomlTable root(path, data, "");
   root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
                   "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
                   "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
@@ -425,9 +426,9 @@ Scene loadScene(const std::string& path) {
       root.fail("model", "\"" + model.string() + "\", which does not exist", "an existing model file");
     const toml::value m = parseTomlFile(model.string(), "model file");
     s.inputHash = hashFileText(model.string(), s.inputHash);
-    const TomlTable mroot(m, model.string(), "");
+    const TomlTable mroot(model.string(), m, "");
     mroot.allowOnly({"format", "element_types", "bond_types"});
-    if (mroot.integer("format", 1) != 1) mroot.fail("format", std::to_string(mroot.integer("format")), "1");
+    if (mroot.integerOr("format", 1) != 1) mroot.fail("format", std::to_string(mroot.integer("format")), "1");
     readModelTables(mroot, s);
   }
   readModelTables(root, s);
@@ -438,14 +439,14 @@ Scene loadScene(const std::string& path) {
   readNetworkTable(root, s);
   readBoundary(root, s);
   if (root.has("local_damping")) {
-    const TomlTable t = root.table("local_damping");
+    const TomlTable t = root.requireTable("local_damping");
     t.allowOnly({"alpha"});
     s.localDampingAlpha = t.number("alpha");
     if (s.localDampingAlpha < 0.0 || s.localDampingAlpha >= 1.0)
       t.fail("alpha", std::to_string(s.localDampingAlpha), "a number in [0, 1)");
   }
   if (root.has("viscous_damping")) {
-    const TomlTable t = root.table("viscous_damping");
+    const TomlTable t = root.requireTable("viscous_damping");
     t.allowOnly({"rate_per_ns"});
     s.viscousRate = t.positive("rate_per_ns");
   }
@@ -469,7 +470,7 @@ Scene loadScene(const std::string& path) {
   if (root.has("tensile")) {
     if (root.has("stages"))
       root.fail("tensile", "a [tensile] table beside [[stages]]", "the test as a stage with kind = \"tensile\"");
-    readTensileTable(root.table("tensile"), s.tensile);
+    readTensileTable(root.requireTable("tensile"), s.tensile);
     setUpTensile(s);
   }
   if (root.has("stages")) readStages(root, s);

@@ -4,6 +4,7 @@
 // missing elements or types are InputErrors naming the file and the key.
 #include <string>
 
+#include "common/toml_table.hpp"
 #include "mdem/scene.hpp"
 
 namespace mesochain::mdem {
@@ -12,6 +13,6 @@ namespace mesochain::mdem {
 Scene loadScene(const std::string& path);
 
 // Reads element_types / bond_types (from a model file or a scene) into `scene`.
-void readModelTables(const class TomlTable& root, Scene& scene);
+void readModelTables(const TomlTable& root, Scene& scene);
 
 }  // namespace mesochain::mdem

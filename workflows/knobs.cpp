@@ -18,7 +18,7 @@
 #include "beam/beam_run.hpp"
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
 
 namespace mesochain::workflows {

@@ -23,7 +23,7 @@
 #include "beam/scan_table.hpp"
 #include "dftb/calculator.hpp"
 #include "objective/core/cell.hpp"
-#include "objective/drivers/scan_file.hpp"
+#include "input/scan_file.hpp"
 
 namespace mesochain::workflows {
 

@@ -12,7 +12,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 namespace mesochain::workflows {
 

@@ -191,7 +191,7 @@ void readKPoints(const Node& h, GenType type, CellInput& in) {
     }
     m.fail("the k-point scheme '" + m.name + "'", expected);
   }
-  // .gen S/F: a and b only set vacuum (objective/core/gen_file.hpp), c is the period.
+  // .gen S/F: a and b only set vacuum (input/gen_file.hpp), c is the period.
   const char* expected = "KPointsAndWeights = SupercellFolding { 1 0 0  0 1 0  0 0 N  0.0 0.0 S }";
   if (!k) h.fail("no KPointsAndWeights for a periodic geometry", expected);
   const Node& m = method(*k, expected);

@@ -19,8 +19,8 @@
 #include <string>
 
 #include "input/hsd/hsd_tree.hpp"
-#include "objective/core/cell_file.hpp"
-#include "objective/core/gen_file.hpp"
+#include "input/cell_file.hpp"
+#include "input/gen_file.hpp"
 
 namespace mesochain::input::hsd {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
-#include "objective/core/text_reader.hpp"
+#include "input/text_reader.hpp"
 
 namespace mesochain::input::hsd {
 

@@ -65,8 +65,8 @@ int elementsPerTube(const TomlTable& t, const ElementType& e) {
 
 void readNetworkTable(const TomlTable& root, Scene& s) {
   if (!root.has("network")) return;
-  const TomlTable t = root.table("network");
-  const std::string method = t.string("method", "random");
+  const TomlTable t = root.requireTable("network");
+  const std::string method = t.stringOr("method", "random");
   if (method != "random" && method != "deposition") t.fail("method", "\"" + method + "\"", "\"random\" or \"deposition\"");
   if (method == "deposition") return readDepositionTable(root, t, s);
   t.allowOnly({"method", "element_type", "bond_type", "size_nm", "tubes", "areal_density_ug_per_cm2", "tube_length_nm",
@@ -95,14 +95,14 @@ void readNetworkTable(const TomlTable& root, Scene& s) {
       t.fail("areal_density_ug_per_cm2", fmt::format("{:.6g}", t.number("areal_density_ug_per_cm2")),
              "a density giving at least one tube in the film");
   }
-  const std::string shape = t.string("shape", "straight");
+  const std::string shape = t.stringOr("shape", "straight");
   if (shape != "straight" && shape != "wavy") t.fail("shape", "\"" + shape + "\"", "\"straight\" or \"wavy\"");
   if (shape == "straight" && t.has("waviness_deg")) t.fail("waviness_deg", "a waviness for straight tubes", "shape = \"wavy\"");
-  n.waviness = shape == "wavy" ? t.number("waviness_deg", 15.0) * units::kPi / 180.0 : 0.0;
+  n.waviness = shape == "wavy" ? t.numberOr("waviness_deg", 15.0) * units::kPi / 180.0 : 0.0;
   if (n.waviness < 0.0 || n.waviness > units::kPi / 2)
     t.fail("waviness_deg", fmt::format("{}", t.number("waviness_deg")), "an angle per element in [0, 90] degrees");
-  n.minimumGap = t.nonNegative("minimum_gap_nm", n.minimumGap);
-  const long seed = t.integer("seed", 1);
+  n.minimumGap = t.nonNegativeOr("minimum_gap_nm", n.minimumGap);
+  const long seed = t.integerOr("seed", 1);
   if (seed < 0) t.fail("seed", std::to_string(seed), "a seed >= 0");
   n.seed = static_cast<std::uint64_t>(seed);
   generateNetwork(s, n);
@@ -117,20 +117,20 @@ void readContactTables(const TomlTable& root, Scene& s) {
       root.fail(e, "nothing", fmt::format("a [{}] table (docs/mdem-contacts.md)", e));
   }
   if (root.has("vdw_contact")) {
-    const TomlTable t = root.table("vdw_contact");
+    const TomlTable t = root.requireTable("vdw_contact");
     t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
                  "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg",
                  "layer_spacing_nm", "edge_width_nm"});
     VdwContactSpec& v = s.contacts.vdw;
-    const std::string form = t.string("form", "anisotropic");
+    const std::string form = t.stringOr("form", "anisotropic");
     if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
     v.anisotropic = form == "anisotropic";
     v.lj.epsilon = t.positive("epsilon_meV") * 1e-3 * units::kElectronvolt;
     v.lj.sigma = t.positive("sigma_nm");
     v.lj.surfaceDensity = t.positive("surface_density_per_nm2");
-    v.switchGap = t.number("switch_gap_nm", v.switchGap);
-    v.cutoffGap = t.number("cutoff_gap_nm", v.cutoffGap);
-    v.quadraturePoints = static_cast<int>(t.integer("quadrature_points", v.quadraturePoints));
+    v.switchGap = t.numberOr("switch_gap_nm", v.switchGap);
+    v.cutoffGap = t.numberOr("cutoff_gap_nm", v.cutoffGap);
+    v.quadraturePoints = static_cast<int>(t.integerOr("quadrature_points", v.quadraturePoints));
     if (t.has("quadrature_tolerance")) {
       if (t.has("quadrature_points"))
         t.fail("quadrature_tolerance", "both quadrature_points and quadrature_tolerance",
@@ -139,28 +139,28 @@ void readContactTables(const TomlTable& root, Scene& s) {
       if (!(v.quadratureTolerance > 0.0))
         t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
     }
-    v.alignedWindowDegrees = t.number("aligned_window_deg", v.alignedWindowDegrees);
-    v.layerSpacing = t.number("layer_spacing_nm", v.layerSpacing);
-    v.edgeWidth = t.number("edge_width_nm", v.edgeWidth);
+    v.alignedWindowDegrees = t.numberOr("aligned_window_deg", v.alignedWindowDegrees);
+    v.layerSpacing = t.numberOr("layer_spacing_nm", v.layerSpacing);
+    v.edgeWidth = t.numberOr("edge_width_nm", v.edgeWidth);
   }
   if (root.has("contact_damping")) {
-    const TomlTable t = root.table("contact_damping");
+    const TomlTable t = root.requireTable("contact_damping");
     t.allowOnly({"translational_pN_ns_per_nm2", "rotational_pN_ns", "full_gap_nm", "cutoff_gap_nm"});
     ContactDampingSpec& d = s.contacts.damping;
-    d.translational = t.nonNegative("translational_pN_ns_per_nm2", -1.0);
+    d.translational = t.nonNegativeOr("translational_pN_ns_per_nm2", -1.0);
     if (d.translational < 0.0) t.fail("translational_pN_ns_per_nm2", "nothing", "a value >= 0");
-    d.rotational = t.nonNegative("rotational_pN_ns", 0.0);
-    d.fullGap = t.number("full_gap_nm", d.fullGap);
-    d.cutoffGap = t.number("cutoff_gap_nm", d.cutoffGap);
+    d.rotational = t.nonNegativeOr("rotational_pN_ns", 0.0);
+    d.fullGap = t.numberOr("full_gap_nm", d.fullGap);
+    d.cutoffGap = t.numberOr("cutoff_gap_nm", d.cutoffGap);
   }
   if (root.has("contacts")) {
-    const TomlTable t = root.table("contacts");
+    const TomlTable t = root.requireTable("contacts");
     t.allowOnly({"exclude_within_elements", "skin_nm"});
-    s.contacts.excludeWithin = static_cast<int>(t.integer("exclude_within_elements", s.contacts.excludeWithin));
-    s.contacts.skin = t.number("skin_nm", s.contacts.skin);
+    s.contacts.excludeWithin = static_cast<int>(t.integerOr("exclude_within_elements", s.contacts.excludeWithin));
+    s.contacts.skin = t.numberOr("skin_nm", s.contacts.skin);
   }
   if (root.has("periodic")) {
-    const TomlTable t = root.table("periodic");
+    const TomlTable t = root.requireTable("periodic");
     t.allowOnly({"length_nm"});
     const Vec3 l = t.vec3("length_nm");
     for (int k = 0; k < 3; ++k) {

@@ -2,7 +2,7 @@
 // Scene-file tables of the contacts (docs/scene-file.md, docs/mdem-contacts.md):
 // [vdw_contact], [contact_damping], [contacts] (neighbour search), [periodic].
 #include "mdem/scene.hpp"
-#include "mdem/toml_reader.hpp"
+#include "common/toml_table.hpp"
 
 namespace mesochain::mdem {
 

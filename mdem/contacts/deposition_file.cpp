@@ -36,12 +36,12 @@ void readDepositionTable(const TomlTable& root, const TomlTable& t, Scene& s) {
   d.elementsPerTube = elementsPerTube(t, e);
   const double tubeLength = d.elementsPerTube * e.length;
 
-  const std::string boundary = t.string("boundary", "periodic");
+  const std::string boundary = t.stringOr("boundary", "periodic");
   if (boundary != "periodic" && boundary != "cut") t.fail("boundary", "\"" + boundary + "\"", "\"periodic\" or \"cut\"");
   d.boundary = boundary == "cut" ? FilmBoundary::Cut : FilmBoundary::Periodic;
   if (d.boundary == FilmBoundary::Cut) {
     // Default sheet: the film plus one tube length plus one clearance along each axis.
-    const double margin = tubeLength + 2.0 * e.contactRadius() + t.nonNegative("minimum_gap_nm", d.minimumGap);
+    const double margin = tubeLength + 2.0 * e.contactRadius() + t.nonNegativeOr("minimum_gap_nm", d.minimumGap);
     if (t.has("sheet_size_nm")) std::tie(d.sheetX, d.sheetY) = readPair(t, "sheet_size_nm");
     else d.sheetX = d.sizeX + margin, d.sheetY = d.sizeY + margin;
   } else if (t.has("sheet_size_nm")) {
@@ -76,42 +76,42 @@ void readDepositionTable(const TomlTable& root, const TomlTable& t, Scene& s) {
   }
   if (d.tubes == 0) d.countKey = t.where("thickness_nm");
 
-  const std::string shape = t.string("shape", "straight");
+  const std::string shape = t.stringOr("shape", "straight");
   if (shape != "straight" && shape != "wavy") t.fail("shape", "\"" + shape + "\"", "\"straight\" or \"wavy\"");
   if (shape == "straight" && t.has("waviness_deg")) t.fail("waviness_deg", "a waviness for straight tubes", "shape = \"wavy\"");
-  d.waviness = shape == "wavy" ? t.number("waviness_deg", 15.0) * kDeg : 0.0;
+  d.waviness = shape == "wavy" ? t.numberOr("waviness_deg", 15.0) * kDeg : 0.0;
   if (d.waviness < 0.0 || d.waviness > units::kPi / 2)
     t.fail("waviness_deg", fmt::format("{}", t.number("waviness_deg")), "an angle per element in [0, 90] degrees");
 
-  d.alignedFraction = t.nonNegative("aligned_fraction", 0.0);
+  d.alignedFraction = t.nonNegativeOr("aligned_fraction", 0.0);
   if (d.alignedFraction > 1.0) t.fail("aligned_fraction", fmt::format("{}", d.alignedFraction), "a fraction in [0, 1]");
   if (t.has("alignment_axis") && t.has("alignment_angle_deg")) t.fail("alignment_axis", "both alignment_axis and alignment_angle_deg", "one of them");
-  const std::string axis = t.string("alignment_axis", "x");
+  const std::string axis = t.stringOr("alignment_axis", "x");
   if (axis != "x" && axis != "y") t.fail("alignment_axis", "\"" + axis + "\"", "\"x\" or \"y\"");
   d.alignmentAngle = t.has("alignment_angle_deg") ? t.number("alignment_angle_deg") * kDeg : (axis == "y" ? 0.5 * units::kPi : 0.0);
-  d.alignmentSpread = t.nonNegative("alignment_spread_deg", 0.0) * kDeg;
+  d.alignmentSpread = t.nonNegativeOr("alignment_spread_deg", 0.0) * kDeg;
   if (d.alignmentSpread > units::kPi) t.fail("alignment_spread_deg", fmt::format("{}", t.number("alignment_spread_deg")), "a spread in [0, 180] degrees");
   if (d.alignedFraction == 0.0)
     for (const char* k : {"alignment_axis", "alignment_angle_deg", "alignment_spread_deg"})
       if (t.has(k)) t.fail(k, "an alignment without aligned tubes", "aligned_fraction > 0");
 
-  d.maxSlope = t.number("drape_slope_deg", d.maxSlope / kDeg) * kDeg;
+  d.maxSlope = t.numberOr("drape_slope_deg", d.maxSlope / kDeg) * kDeg;
   if (!(d.maxSlope > 0.0 && d.maxSlope < 0.5 * units::kPi)) t.fail("drape_slope_deg", fmt::format("{}", d.maxSlope / kDeg), "an angle in (0, 90) degrees");
-  d.bendPerElement = t.number("drape_bend_deg", d.bendPerElement / kDeg) * kDeg;
+  d.bendPerElement = t.numberOr("drape_bend_deg", d.bendPerElement / kDeg) * kDeg;
   if (!(d.bendPerElement > 0.0 && d.bendPerElement <= 0.5 * units::kPi))
     t.fail("drape_bend_deg", fmt::format("{}", d.bendPerElement / kDeg), "an angle in (0, 90] degrees");
-  d.minimumGap = t.nonNegative("minimum_gap_nm", d.minimumGap);
-  const std::string rest = t.string("rest_shape", "straight");
+  d.minimumGap = t.nonNegativeOr("minimum_gap_nm", d.minimumGap);
+  const std::string rest = t.stringOr("rest_shape", "straight");
   if (rest != "straight" && rest != "as_laid") t.fail("rest_shape", "\"" + rest + "\"", "\"straight\" or \"as_laid\"");
   d.restShape = rest == "straight" ? RestShape::Straight : RestShape::AsLaid;
-  const long seed = t.integer("seed", 1);
+  const long seed = t.integerOr("seed", 1);
   if (seed < 0) t.fail("seed", std::to_string(seed), "a seed >= 0");
   d.seed = static_cast<std::uint64_t>(seed);
 
   // Periodicity: a periodic film sets [periodic] x, y to its size (or checks a given one); a cut
   // specimen is not periodic in the plane.
   if (root.has("periodic")) {
-    const TomlTable p = root.table("periodic");
+    const TomlTable p = root.requireTable("periodic");
     const Vec3 lp = p.vec3("length_nm");
     const bool periodicFilm = d.boundary == FilmBoundary::Periodic;
     if ((periodicFilm && (std::abs(lp.x() - d.sizeX) > 1e-9 * d.sizeX || std::abs(lp.y() - d.sizeY) > 1e-9 * d.sizeY)) ||

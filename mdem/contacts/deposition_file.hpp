@@ -2,7 +2,7 @@
 // [network] method = "deposition" (docs/scene-file.md): reads the keys, sets the scene's
 // periodicity (periodic films) and lays the film (deposition.hpp).
 #include "mdem/scene.hpp"
-#include "mdem/toml_reader.hpp"
+#include "common/toml_table.hpp"
 
 namespace mesochain::mdem {
 

@@ -10,6 +10,10 @@
 
 namespace mesochain::objective {
 
+// Atoms (and images) closer than this are an input error (Å): ObjectiveCell::validate's bound
+// for every geometry read, built or restored.
+inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
+
 struct ObjectiveCell {
   Symmetry symmetry = Symmetry::ring(1);  // default: an isolated cluster (C_1, no periodicity)
   std::vector<std::string> speciesNames;  // e.g. {"C", "H"}

@@ -5,7 +5,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "objective/core/cell.hpp"
 
 namespace mesochain::objective {
 

@@ -12,7 +12,7 @@
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "objective/core/cell.hpp"
 
 namespace mesochain::objective {
 

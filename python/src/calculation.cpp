@@ -7,7 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "dftb/calculator.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
 #include "python/src/arrays.hpp"
 #include "python/src/bindings.hpp"

@@ -3,13 +3,14 @@
 #include <pybind11/stl.h>
 
 #include "common/units.hpp"
+#include "dftb/scc_table.hpp"
 #include "input/cell_input_file.hpp"
-#include "objective/core/cell_document.hpp"
-#include "objective/core/cell_file.hpp"
-#include "objective/core/gen_file.hpp"
-#include "objective/core/text_reader.hpp"
-#include "objective/core/xyz_file.hpp"
-#include "objective/core/xyz_settings.hpp"
+#include "input/cell_document.hpp"
+#include "input/cell_file.hpp"
+#include "input/gen_file.hpp"
+#include "input/text_reader.hpp"
+#include "input/xyz_file.hpp"
+#include "input/xyz_settings.hpp"
 #include "python/src/arrays.hpp"
 #include "python/src/bindings.hpp"
 
@@ -123,17 +124,15 @@ py::dict dispersionDict(const objective::DispersionInput& d) {
   return out;
 }
 
-py::dict sccDict(const objective::SccInput& s) {
+// The [scc] table as the cell writer writes it (dftb/scc_table.hpp): its keys are listed there.
+py::dict sccDict(const dftb::SccSettings& s) {
   py::dict out;
-  out["enabled"] = s.enabled;
-  out["charge_tolerance"] = s.chargeTolerance;
-  out["energy_tolerance"] = s.energyTolerance;
-  out["max_iterations"] = s.maxIterations;
-  out["mixer"] = s.mixer;
-  out["mixing"] = s.mixing;
-  out["ewald_tolerance"] = s.ewaldTolerance;
-  out["stop_if_unconverged"] = s.stopIfUnconverged;
-  out["warm_start"] = s.warmStart;
+  for (const SettingEntry& e : dftb::sccTableEntries(s)) {
+    if (e.value.is_boolean()) out[e.key.c_str()] = e.value.as_boolean();
+    else if (e.value.is_integer()) out[e.key.c_str()] = e.value.as_integer();
+    else if (e.value.is_floating()) out[e.key.c_str()] = e.value.as_floating();
+    else out[e.key.c_str()] = e.value.as_string().str;
+  }
   return out;
 }
 

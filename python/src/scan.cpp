@@ -4,10 +4,10 @@
 #include <pybind11/stl.h>
 
 #include "common/errors.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 #include "objective/drivers/scan.hpp"
-#include "objective/drivers/scan_file.hpp"
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_file.hpp"
+#include "input/scan_output.hpp"
 #include "python/src/bindings.hpp"
 
 namespace mesochain::python {

@@ -1,4 +1,4 @@
-// The CSV `mesochain scan` writes (objective/drivers/scan_output.hpp) is a table `mesochain beam`
+// The CSV `mesochain scan` writes (input/scan_output.hpp) is a table `mesochain beam`
 // reads (beam/scan_table.hpp): its header lines carry T0, atoms per cell, kind, direction and
 // the measured dimensions, and the CSV gives the same curve as the JSON written beside it.
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "beam/scan_table.hpp"
 #include "common/errors.hpp"
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_output.hpp"
 
 namespace mesochain::beam {
 namespace {

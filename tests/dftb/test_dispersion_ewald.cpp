@@ -10,7 +10,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "dftb/dispersion_ewald.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 using namespace mesochain;
 using dftb::EwaldDispersionTerm;

@@ -13,7 +13,7 @@
 #include "carbon_fixture.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 #include "objective/drivers/relax.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"

@@ -22,7 +22,7 @@
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_output.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;

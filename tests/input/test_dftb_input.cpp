@@ -14,7 +14,7 @@
 #include "input/hsd/dftb_input.hpp"
 #include "input/hsd/dftbplus_units.hpp"
 #include "objective/core/uff_parameters.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 
 using namespace mesochain;
 using namespace mesochain::input::hsd;
@@ -75,7 +75,7 @@ TEST(DftbInput, DefaultsAndTaskAreDftbPlus) {
   EXPECT_EQ(scc.scc.chargeTolerance, 1e-5);
   EXPECT_EQ(scc.scc.maxIterations, 100);
   EXPECT_EQ(scc.scc.energyTolerance, 1.0);
-  EXPECT_EQ(scc.scc.ewaldTolerance, objective::SccInput{}.ewaldTolerance);  // mesochain's default
+  EXPECT_EQ(scc.scc.ewaldTolerance, dftb::SccSettings{}.ewaldTolerance);  // mesochain's default
   const auto ewald = read("scc-ewald", methane("SCC = Yes\n  EwaldTolerance = 1e-12\n  EwaldParameter = 0.3"));
   EXPECT_EQ(ewald.scc.ewaldTolerance, 1e-12);
   // A relaxation: DFTB+'s defaults, or the given force in its unit.

@@ -15,8 +15,8 @@
 
 #include "hsd_support.hpp"
 #include "input/hsd/dftb_input.hpp"
-#include "objective/core/cell_file.hpp"
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_file.hpp"
+#include "input/cell_calculator.hpp"
 #include "tests/support/vacuum_extrapolation.hpp"
 
 using namespace mesochain;

@@ -10,7 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "objective/core/collapsed_tube_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
 

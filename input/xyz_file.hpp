@@ -10,7 +10,7 @@
 // Without them, a `Lattice` whose first two vectors are perpendicular to z and whose third is
 // along z is read as a screw with T = |c|, gamma = 0, N_a = 1 (as for .gen type S); any other
 // Lattice is an error; no Lattice at all is a cluster. The settings keys
-// mesochain:<section>.<key> of objective/core/xyz_settings.hpp are accepted and not used here. `Properties` (if given) must contain
+// mesochain:<section>.<key> of input/xyz_settings.hpp are accepted and not used here. `Properties` (if given) must contain
 // species:S:1 and pos:R:3; forces:R:3 is read when present; other columns are skipped.
 #include <iosfwd>
 #include <optional>
@@ -39,7 +39,7 @@ struct XyzExtras {
   std::optional<double> energy;              // Hartree (written as energy=... in eV)
   const Eigen::Matrix3Xd* forces = nullptr;  // Hartree/Bohr, 3 x N_o (written in eV/Å)
   // The settings that produced the energy (k-points, temperature, parameters, dispersion, SCC),
-  // written as mesochain:<section>.<key> (objective/core/xyz_settings.hpp).
+  // written as mesochain:<section>.<key> (input/xyz_settings.hpp).
   const CellInput* settings = nullptr;
 };
 

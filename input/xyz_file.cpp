@@ -1,4 +1,4 @@
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/text_reader.hpp"
-#include "objective/core/xyz_settings.hpp"
+#include "input/text_reader.hpp"
+#include "input/xyz_settings.hpp"
 
 namespace mesochain::objective {
 

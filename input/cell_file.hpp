@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dftb/scc_term.hpp"
 #include "objective/core/cell.hpp"
 #include "objective/core/kgrid.hpp"
 
@@ -27,8 +28,6 @@ inline constexpr double kDefaultBondLengthAngstrom = 1.42;
 inline constexpr double kDefaultCollapseInterlayerAngstrom = 3.4;
 inline constexpr double kDefaultCollapseBulbRadiusAngstrom = 3.4;
 inline constexpr double kDefaultCollapseTransitionRadiusAngstrom = 3.4;
-// Atoms (and images) closer than this are an input error (Å).
-inline constexpr double kMinimumAtomDistanceAngstrom = 0.5;
 
 // Defaults of model = "kc" (dftb/dispersion_kc.hpp): the bond graph's covalent cutoff (Å) and
 // the largest cutoff accepted (Å).
@@ -58,20 +57,6 @@ struct DispersionInput {
   double kcBondCutoff = 0;              // Bohr (kc)
 };
 
-// [scc]: self-consistent charges (dftb/scc_term.hpp); defaults as documented in
-// docs/cell-file.md.
-struct SccInput {
-  bool enabled = false;
-  double chargeTolerance = 1e-8;  // electrons
-  double energyTolerance = 1e-8;  // Hartree per cell
-  int maxIterations = 100;
-  std::string mixer = "broyden";  // broyden | simple
-  double mixing = 0.2;
-  double ewaldTolerance = 1e-10;
-  bool stopIfUnconverged = true;
-  bool warmStart = true;  // start from the last converged charges of the same atoms
-};
-
 struct TaskInput {
   std::string type = "energy";    // energy | forces | relax
   double forceTolerance = 1e-4;   // Hartree/Bohr (relax)
@@ -91,7 +76,7 @@ struct CellInput {
   std::string parameterSet;
   std::map<std::string, int> maxAngularMomentum;  // optional per species: 0 = s, 1 = p, ...
   DispersionInput dispersion;
-  SccInput scc;
+  dftb::SccSettings scc;  // [scc], read and written by dftb/scc_table.hpp
   TaskInput task;
 };
 

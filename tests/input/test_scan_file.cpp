@@ -8,7 +8,7 @@
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
 #include "common/units.hpp"
-#include "objective/drivers/scan_file.hpp"
+#include "input/scan_file.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;

@@ -5,7 +5,7 @@
 // Paths in the file are relative to the scan file.
 #include <string>
 
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "objective/drivers/scan.hpp"
 
 namespace mesochain::objective {

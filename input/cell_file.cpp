@@ -1,4 +1,4 @@
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -14,17 +14,18 @@
 #include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_document.hpp"
-#include "objective/core/cell_file_sections.hpp"
-#include "objective/core/text_reader.hpp"
+#include "dftb/scc_table.hpp"
+#include "input/cell_document.hpp"
+#include "input/cell_file_sections.hpp"
+#include "input/text_reader.hpp"
 #include "common/toml_table.hpp"
 #include "objective/core/uff_parameters.hpp"
 
 #ifndef MESOCHAIN_PARAMS_DIR
-#error "MESOCHAIN_PARAMS_DIR must be defined (objective/core/CMakeLists.txt)"
+#error "MESOCHAIN_PARAMS_DIR must be defined (input/CMakeLists.txt)"
 #endif
 #ifndef MESOCHAIN_PROJECT_DIR
-#error "MESOCHAIN_PROJECT_DIR must be defined (objective/core/CMakeLists.txt)"
+#error "MESOCHAIN_PROJECT_DIR must be defined (input/CMakeLists.txt)"
 #endif
 
 namespace mesochain::objective {
@@ -340,42 +341,6 @@ void readDispersion(const TomlTable& root, CellInput& in) {
   }
 }
 
-void readScc(const TomlTable& root, CellInput& in) {
-  const auto t = root.table("scc");
-  if (!t) return;  // documented default: no SCC
-  t->allowOnly({"enabled", "charge_tolerance", "energy_tolerance", "max_iterations", "mixer",
-                "mixing", "ewald_tolerance", "stop_if_unconverged", "warm_start"});
-  SccInput& s = in.scc;
-  if (t->has("enabled")) s.enabled = t->boolean("enabled", "true or false");
-  auto bounded = [&](const char* key, double def, double lo, double hi, const char* what) {
-    if (!t->has(key)) return def;
-    const double x = t->number(key, what);
-    if (!(x >= lo && x <= hi)) t->fail(key, fmt::format("{}", x), what);
-    return x;
-  };
-  // Below 1e-13 the Mulliken charges and energies cannot be resolved in double precision.
-  s.chargeTolerance = bounded("charge_tolerance", s.chargeTolerance, 1e-13, 1.0,
-                              "a charge tolerance in [1e-13, 1] (electrons)");
-  s.energyTolerance = bounded("energy_tolerance", s.energyTolerance, 1e-13, 1.0,
-                              "an energy tolerance in [1e-13, 1] (Hartree per cell)");
-  s.mixing = bounded("mixing", s.mixing, 1e-6, 1.0, "a mixing parameter in (0, 1]");
-  s.ewaldTolerance = bounded("ewald_tolerance", s.ewaldTolerance, 1e-13, 1e-2,
-                             "a tolerance in [1e-13, 1e-2]");
-  if (t->has("max_iterations")) {
-    const long n = t->integer("max_iterations", "1 .. 100000");
-    if (n < 1 || n > 100000L) t->fail("max_iterations", std::to_string(n), "1 .. 100000");
-    s.maxIterations = static_cast<int>(n);
-  }
-  if (t->has("mixer")) {
-    s.mixer = t->string("mixer", "\"broyden\" or \"simple\"");
-    if (s.mixer != "broyden" && s.mixer != "simple")
-      t->fail("mixer", "\"" + s.mixer + "\"", "\"broyden\" or \"simple\"");
-  }
-  if (t->has("stop_if_unconverged"))
-    s.stopIfUnconverged = t->boolean("stop_if_unconverged", "true or false");
-  if (t->has("warm_start")) s.warmStart = t->boolean("warm_start", "true or false");
-}
-
 void readTask(const TomlTable& root, CellInput& in) {
   const auto t = root.table("task");
   if (!t) return;  // documented default: type = "energy"
@@ -439,7 +404,7 @@ CellInput readCellDocument(const toml::value& data, const std::string& path) {
 
   readParameters(root, in);
   readDispersion(root, in);
-  readScc(root, in);
+  if (const auto scc = root.table("scc")) dftb::readSccTable(*scc, in.scc);  // default: no SCC
   readTask(root, in);
   in.cell.validate(path, kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);
   return in;

@@ -1,4 +1,4 @@
-#include "objective/core/cell_file_sections.hpp"
+#include "input/cell_file_sections.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -11,11 +11,11 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/collapsed_tube_builder.hpp"
-#include "objective/core/gen_file.hpp"
+#include "input/gen_file.hpp"
 #include "objective/core/graphene_builder.hpp"
 #include "objective/core/nanotube_builder.hpp"
-#include "objective/core/text_reader.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/text_reader.hpp"
+#include "input/xyz_file.hpp"
 
 namespace mesochain::objective::detail {
 

@@ -13,7 +13,7 @@
 // take only atoms and symmetry from an .xyz geometry (a cell file states its own settings).
 #include <string>
 
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::objective {
 

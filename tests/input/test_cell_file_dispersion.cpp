@@ -11,7 +11,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "objective/core/uff_parameters.hpp"
 
 using namespace mesochain;

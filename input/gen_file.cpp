@@ -1,4 +1,4 @@
-#include "objective/core/gen_file.hpp"
+#include "input/gen_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/text_reader.hpp"
+#include "input/text_reader.hpp"
 
 namespace mesochain::objective {
 

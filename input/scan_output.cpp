@@ -1,4 +1,4 @@
-#include "objective/drivers/scan_output.hpp"
+#include "input/scan_output.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include "common/atomic_file.hpp"
 #include "common/finite_output.hpp"
 #include "common/errors.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 namespace mesochain::objective {
 

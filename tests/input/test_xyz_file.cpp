@@ -8,7 +8,7 @@
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/nanotube_builder.hpp"
-#include "objective/core/xyz_file.hpp"
+#include "input/xyz_file.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "dftb/calculator.hpp"
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::objective {
 

@@ -1,4 +1,4 @@
-#include "objective/core/text_reader.hpp"
+#include "input/text_reader.hpp"
 
 #include <cctype>
 #include <charconv>

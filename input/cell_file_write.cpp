@@ -9,7 +9,8 @@
 #include "common/errors.hpp"
 #include "common/electronic_temperature.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_file.hpp"
+#include "dftb/scc_table.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::objective {
 
@@ -120,14 +121,7 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   }
   if (d.model == "lj" && d.summation == "ewald")
     out << fmt::format("summation = \"ewald\"\newald_tolerance = {}\n", real(d.ewaldTolerance));
-  const SccInput& sc = in.scc;
-  if (sc.enabled)
-    out << fmt::format(
-        "\n[scc]\nenabled = true\ncharge_tolerance = {}  # e\nenergy_tolerance = {}  # Ha\n"
-        "max_iterations = {}\nmixer = {}\nmixing = {}\newald_tolerance = {}\n"
-        "stop_if_unconverged = {}\nwarm_start = {}\n",
-        real(sc.chargeTolerance), real(sc.energyTolerance), sc.maxIterations, quoted(sc.mixer),
-        real(sc.mixing), real(sc.ewaldTolerance), sc.stopIfUnconverged, sc.warmStart);
+  if (in.scc.enabled) out << "\n[scc]\n" << tomlTableText(dftb::sccTableEntries(in.scc));
   const TaskInput& t = in.task;
   out << "\n[task]\ntype = " << quoted(t.type) << "\n";
   if (t.type == "relax")

@@ -1,4 +1,4 @@
-#include "objective/core/xyz_settings.hpp"
+#include "input/xyz_settings.hpp"
 
 #include <filesystem>
 
@@ -6,12 +6,22 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "dftb/scc_table.hpp"
 
 namespace mesochain::objective {
 
 namespace {
 
 const char* flag(bool b) { return b ? "T" : "F"; }
+
+// An entry of a settings table (common/setting_entries.hpp) as the comment line writes it:
+// booleans T / F, numbers in their shortest form, strings as they are.
+std::string xyzValue(const toml::value& v) {
+  if (v.is_boolean()) return flag(v.as_boolean());
+  if (v.is_integer()) return std::to_string(v.as_integer());
+  if (v.is_floating()) return fmt::format("{}", v.as_floating());
+  return v.as_string().str;
+}
 
 // A value as one token: quoted when it holds a blank, refused when it holds a quote (the
 // comment-line syntax has no escapes).
@@ -72,18 +82,8 @@ std::string xyzSettingsKeys(const CellInput& in) {
     }
     add("dispersion.bond_cutoff", real(d.kcBondCutoff * units::kBohrInAngstrom));
   }
-  const SccInput& s = in.scc;
-  add("scc.enabled", flag(s.enabled));
-  if (s.enabled) {
-    add("scc.charge_tolerance", real(s.chargeTolerance));
-    add("scc.energy_tolerance", real(s.energyTolerance));
-    add("scc.max_iterations", std::to_string(s.maxIterations));
-    add("scc.mixer", s.mixer);
-    add("scc.mixing", real(s.mixing));
-    add("scc.ewald_tolerance", real(s.ewaldTolerance));
-    add("scc.stop_if_unconverged", flag(s.stopIfUnconverged));
-    add("scc.warm_start", flag(s.warmStart));
-  }
+  for (const SettingEntry& e : dftb::sccTableEntries(in.scc))
+    if (in.scc.enabled || e.key == "enabled") add("scc." + e.key, xyzValue(e.value));
   return out;
 }
 

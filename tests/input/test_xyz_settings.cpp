@@ -1,5 +1,5 @@
-// The settings keys of the extended XYZ comment line (objective/core/xyz_settings.hpp) and the
-// cell reader on an in-memory document (objective/core/cell_document.hpp).
+// The settings keys of the extended XYZ comment line (input/xyz_settings.hpp) and the
+// cell reader on an in-memory document (input/cell_document.hpp).
 #include <sstream>
 #include <string>
 
@@ -7,9 +7,9 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/cell_document.hpp"
-#include "objective/core/xyz_file.hpp"
-#include "objective/core/xyz_settings.hpp"
+#include "input/cell_document.hpp"
+#include "input/xyz_file.hpp"
+#include "input/xyz_settings.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;

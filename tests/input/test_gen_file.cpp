@@ -7,7 +7,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
-#include "objective/core/gen_file.hpp"
+#include "input/gen_file.hpp"
 #include "objective/core/nanotube_builder.hpp"
 
 using namespace mesochain;

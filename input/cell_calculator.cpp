@@ -1,4 +1,4 @@
-#include "objective/drivers/cell_calculator.hpp"
+#include "input/cell_calculator.hpp"
 
 #include <utility>
 
@@ -34,15 +34,7 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
     s.kc.taperStart = in.dispersion.kcTaperStart;
     s.kc.bondCutoff = in.dispersion.kcBondCutoff;
   }
-  s.scc.enabled = in.scc.enabled;
-  s.scc.chargeTolerance = in.scc.chargeTolerance;
-  s.scc.energyTolerance = in.scc.energyTolerance;
-  s.scc.maxIterations = in.scc.maxIterations;
-  s.scc.mixer = in.scc.mixer;
-  s.scc.mixing = in.scc.mixing;
-  s.scc.ewaldTolerance = in.scc.ewaldTolerance;
-  s.scc.stopIfUnconverged = in.scc.stopIfUnconverged;
-  s.scc.warmStart = in.scc.warmStart;
+  s.scc = in.scc;  // the same struct: read by dftb/scc_table.hpp
   return s;
 }
 

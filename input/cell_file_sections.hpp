@@ -1,7 +1,7 @@
 #pragma once
 // Parts of the cell-file reader (cell_file.cpp): the structure ([geometry] or [builder], and
 // [symmetry]) and [kpoints].
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 #include "common/toml_table.hpp"
 
 namespace mesochain::objective::detail {

@@ -1,4 +1,4 @@
-#include "objective/drivers/scan_file.hpp"
+#include "input/scan_file.hpp"
 
 #include <filesystem>
 #include <fstream>

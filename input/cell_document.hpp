@@ -7,7 +7,7 @@
 
 #include <toml.hpp>
 
-#include "objective/core/cell_file.hpp"
+#include "input/cell_file.hpp"
 
 namespace mesochain::objective {
 
