@@ -44,11 +44,18 @@ int reduce(const ReduceOptions& o) {
   log << fmt::format("rotation order {} -> {}: {} atoms -> {} atoms; run {} for the same energy per atom\n",
                      na, out.cell.symmetry.rotationOrder(), in.cell.atomCount(), out.cell.atomCount(),
                      o.output);
-  log << "representatives (atom of the reduced cell <- atom of the original, counted from 1; their "
-         "forces are equal):";
-  for (size_t i = 0; i < r.representatives.size(); ++i)
-    log << fmt::format(" {}<-{}", i + 1, r.representatives[i] + 1);
-  log << "\n";
+  // The representatives keep their positions, so their forces in the reduced run are the
+  // original atoms' forces; the other atoms' are rotated copies (docs/command-line.md).
+  bool leading = true;
+  for (size_t i = 0; i < r.representatives.size(); ++i) leading = leading && r.representatives[i] == static_cast<int>(i);
+  if (leading) {
+    log << fmt::format("its atoms are atoms 1..{} of the original (same positions, same forces)\n",
+                       r.representatives.size());
+  } else {
+    log << "its atoms are these atoms of the original (same positions, same forces):";
+    for (int a : r.representatives) log << ' ' << a + 1;
+    log << "\n";
+  }
   return 0;
 }
 }  // namespace
