@@ -88,8 +88,8 @@ TEST(CellReduction, SampledAngularNumbersAreRefused) {
 }
 
 TEST(CellReduction, ReducedCellGivesTheSameEnergyAndForces) {
-  // A (5,5) translational cell slightly squeezed into an ellipse-free but non-equilibrium shape:
-  // radial and axial displacements that keep C_5 so the forces are not zero.
+  // A (5,5) translational cell off equilibrium: radial and axial displacements that vary as
+  // cos(5 phi) and sin(5 phi), so C_5 is kept and the forces are not zero.
   ObjectiveCell cell = buildNanotubeTranslational(5, 5, kBond);
   for (int a = 0; a < cell.atomCount(); ++a) {
     const double phi = std::atan2(cell.positions(1, a), cell.positions(0, a));
