@@ -12,10 +12,12 @@ Command makeBeamCommand();
 Command makeScanCommand();
 Command makeSkgenCommand();
 Command makeChainCommand();
+Command makeReduceCommand();
 
 std::vector<Command> allCommands() {
   return {makeVersionCommand(), makeRunCommand(),   makeConvertCommand(), makeScanCommand(), makeBuildCommand(),
-          makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand(), makeChainCommand()};
+          makeBeamCommand(),    makeSkgenCommand(), makeDemCommand(),  makeBenchCommand(), makeChainCommand(),
+          makeReduceCommand()};
 }
 
 }  // namespace mesochain::app
