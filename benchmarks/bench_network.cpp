@@ -23,6 +23,7 @@
 #include "mdem/contacts/network_generator.hpp"
 #include "mdem/contacts/network_structure.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
+#include "mdem/contacts/vdw_kernel_isa.hpp"
 #include "mdem/checkpoint.hpp"
 #include "mdem/lammps_export.hpp"
 #include "mdem/scene_file.hpp"
@@ -45,6 +46,7 @@ struct NetworkBenchOptions {
   int kernelPoints = 0;      // > 0: only this rule, --kernel-repeat times (callgrind)
   int kernelRepeat = 20;
   std::string kernelPath = "table";  // "table" (one lookup of D per point) or "line" (three of H)
+  std::string kernelIsa = "cpu";     // "cpu" (the version the CPU supports) or "baseline" (SSE2 copy)
   std::vector<int> outerRatios;      // non-empty: the multiple-time-stepping curve and exit
   std::string scene;                 // a scene file instead of the generated networks
   double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
@@ -384,9 +386,15 @@ Command makeBenchNetworkCommand() {
         ->check(CLI::Range(0.0, 10.0));
     (*sub)->add_option("--kernel-path", opt->kernelPath, "with --kernel-points: table (D, one lookup) or line (H, three)")
         ->check(CLI::IsMember({"table", "line"}));
+    (*sub)->add_option("--kernel-isa", opt->kernelIsa,
+                       "the vdW table kernel's loop: cpu (AVX2 where the CPU has it) or baseline (SSE2), to compare")
+        ->check(CLI::IsMember({"cpu", "baseline"}));
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
+    mdem::forceBaselineVdwKernel(opt->kernelIsa == "baseline");
+    std::cout << "vdW table kernel: "
+              << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
     if (opt->kernelCurve) return printKernelCurve(*opt);
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =
