@@ -7,6 +7,7 @@
 
 #include "beam/beam_run.hpp"
 #include "common/errors.hpp"
+#include "common/setting_entries.hpp"
 #include "common/toml_file.hpp"
 
 namespace mesochain::app {
@@ -20,15 +21,8 @@ constexpr ScanStage kScanStages[] = {{"stretch", "stretch", ""},
                                      {"bend_soft", "bend", "soft"},
                                      {"bend_hard", "bend", "hard"}};
 
-// A TOML string literal (basic string, escaped).
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
+// A TOML string literal (basic string, escaped: common/setting_entries.hpp).
+std::string quoted(const std::string& s) { return tomlStringText(s); }
 
 std::string line(const toml::value& v) { return fmt::format("(line {})", v.location().line()); }
 

@@ -8,6 +8,7 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/electronic_temperature.hpp"
+#include "common/setting_entries.hpp"
 #include "common/units.hpp"
 #include "dftb/scc_table.hpp"
 #include "input/cell_file.hpp"
@@ -16,29 +17,9 @@ namespace mesochain::objective {
 
 namespace {
 
-// A TOML basic string.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt::format("\\u{:04X}", static_cast<int>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-// Shortest decimal form that reads back to the same double, always with a '.' or exponent
-// so TOML sees a float.
-std::string real(double x) {
-  std::string s = fmt::format("{}", x);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
+// The TOML literals of common/setting_entries.hpp under short names.
+std::string quoted(const std::string& s) { return tomlStringText(s); }
+std::string real(double x) { return tomlRealText(x); }
 
 }  // namespace
 

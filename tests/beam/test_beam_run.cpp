@@ -14,6 +14,7 @@
 #include "beam/beam_run.hpp"
 #include "beam_constants_support.hpp"
 #include "common/errors.hpp"
+#include "tests/support/expect_input_error.hpp"
 
 namespace mesochain::beam {
 namespace {
@@ -128,15 +129,7 @@ TEST(BeamRun, CsvEqualsJson) {
   }
 }
 
-void expectError(const std::function<void()>& f, std::initializer_list<const char*> fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    const std::string m = e.what();
-    for (const char* s : fragments) EXPECT_NE(m.find(s), std::string::npos) << m << " lacks " << s;
-  }
-}
+using mesochain::testing::expectInputError;
 
 TEST(BeamRun, BadTablesAndInputsAreClearErrors) {
   const std::string ok = scanJson("bend", "soft", 1.0, 0.01, "per_bohr", true);
@@ -145,25 +138,25 @@ TEST(BeamRun, BadTablesAndInputsAreClearErrors) {
     s.replace(s.find(a), a.size(), b);
     return s;
   };
-  expectError([&] { parseScanJson(replaced("\"direction\": \"soft\",", ""), "x.json"); }, {"x.json", "direction"});
-  expectError([&] { parseScanJson(replaced("per_bohr", "strain"), "x.json"); }, {"x.json", "deformation_unit", "per_bohr"});
-  expectError([&] { parseScanJson(replaced("\"bend\"", "\"shear\""), "x.json"); }, {"x.json", "kind"});
-  expectError([&] { parseScanJson(replaced("\"T0_bohr\": 4.65", "\"T0_bohr\": -1"), "x.json"); }, {"T0_bohr"});
-  expectError([&] { parseScanJson("{\"format\": 1,", "x.json"); }, {"x.json", "JSON"});
-  expectError([&] { readScanTable("/nonexistent/scan.json"); }, {"/nonexistent/scan.json"});
+  expectInputError([&] { parseScanJson(replaced("\"direction\": \"soft\",", ""), "x.json"); }, {"x.json", "direction"});
+  expectInputError([&] { parseScanJson(replaced("per_bohr", "strain"), "x.json"); }, {"x.json", "deformation_unit", "per_bohr"});
+  expectInputError([&] { parseScanJson(replaced("\"bend\"", "\"shear\""), "x.json"); }, {"x.json", "kind"});
+  expectInputError([&] { parseScanJson(replaced("\"T0_bohr\": 4.65", "\"T0_bohr\": -1"), "x.json"); }, {"T0_bohr"});
+  expectInputError([&] { parseScanJson("{\"format\": 1,", "x.json"); }, {"x.json", "JSON"});
+  expectInputError([&] { readScanTable("/nonexistent/scan.json"); }, {"/nonexistent/scan.json"});
 
   BeamInputs in;
   in.curves = fourCurves();
   in.curves.push_back(in.curves[0]);
   in.curves.back().source = "again.json";
   in.cellsPerBrick = 2;
-  expectError([&] { runBeam(in); }, {"again.json", "second stretch curve", "stretch.json"});
+  expectInputError([&] { runBeam(in); }, {"again.json", "second stretch curve", "stretch.json"});
   in.curves = fourCurves();
   in.curves.pop_back();
-  expectError([&] { runBeam(in); }, {"no D_h"});
+  expectInputError([&] { runBeam(in); }, {"no D_h"});
   in.curves = fourCurves();
   in.curves[1].cellLength = 5.0;
-  expectError([&] { runBeam(in); }, {"twist.json", "T0_bohr"});
+  expectInputError([&] { runBeam(in); }, {"twist.json", "T0_bohr"});
 }
 
 TEST(BeamRun, ConstantsFileConvertsUnits) {
@@ -182,9 +175,9 @@ TEST(BeamRun, ConstantsFileConvertsUnits) {
   const BeamRun r = runBeam(in);
   EXPECT_NEAR(predictConstants(r.beam).bendHard / 3.0e5, 1.0, 1e-12);
   std::ofstream(path) << "format = 1\nC_eV = 1.0\nC_hartree = 2.0\n";
-  expectError([&] { BeamInputs x; readConstantsFile(path, x); }, {"c.toml", "C_"});
+  expectInputError([&] { BeamInputs x; readConstantsFile(path, x); }, {"c.toml", "C_"});
   std::ofstream(path) << "format = 1\nC_joule = 1.0\n";
-  expectError([&] { BeamInputs x; readConstantsFile(path, x); }, {"c.toml", "C_joule", "unknown"});
+  expectInputError([&] { BeamInputs x; readConstantsFile(path, x); }, {"c.toml", "C_joule", "unknown"});
   std::filesystem::remove_all(dir);
 }
 

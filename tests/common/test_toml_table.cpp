@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/toml_table.hpp"
+#include "tests/support/expect_input_error.hpp"
 
 namespace mesochain {
 namespace {
@@ -17,17 +18,7 @@ toml::value parse(const std::string& text) {
   return toml::parse(in, "t.toml");
 }
 
-// Runs f, which must throw an InputError whose message holds every fragment.
-template <class F>
-void expectError(F&& f, std::initializer_list<const char*> fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    const std::string m = e.what();
-    for (const char* s : fragments) EXPECT_NE(m.find(s), std::string::npos) << m << " lacks " << s;
-  }
-}
+using mesochain::testing::expectInputError;
 
 TEST(TomlTable, OptionalKeysTakeTheFallbackOnlyWhenAbsent) {
   const toml::value v = parse("a = 2\ns = \"x\"\nv = [1, 2.5, 3]\n");
@@ -41,17 +32,17 @@ TEST(TomlTable, OptionalKeysTakeTheFallbackOnlyWhenAbsent) {
   EXPECT_EQ(t.vec3Or("w", Eigen::Vector3d::UnitZ()), Eigen::Vector3d::UnitZ());
   EXPECT_TRUE(t.isString("s"));
   EXPECT_FALSE(t.isString("a"));
-  expectError([&] { t.stringOr("a", "y"); }, {"t.toml", "key a (line 1)", "an integer (2)", "a string"});
+  expectInputError([&] { t.stringOr("a", "y"); }, {"t.toml", "key a (line 1)", "an integer (2)", "a string"});
 }
 
 TEST(TomlTable, ArraysAndVectorsAreChecked) {
   const toml::value v = parse("two = [1.0, 2.0]\nmixed = [1, \"b\"]\nnames = [\"a\", 3]\n");
   const TomlTable t("t.toml", v, "");
-  expectError([&] { t.vec3("two"); }, {"key two (line 1)", "2 numbers", "3 numbers [x, y, z]"});
-  expectError([&] { t.numbers("mixed"); }, {"key mixed (line 2)", "a string", "finite numbers"});
-  expectError([&] { t.integers("mixed"); }, {"key mixed", "an array of integers"});
-  expectError([&] { t.strings("names"); }, {"key names (line 3)", "an integer (3)", "strings"});
-  expectError([&] { t.numbers("none"); }, {"key none", "required"});
+  expectInputError([&] { t.vec3("two"); }, {"key two (line 1)", "2 numbers", "3 numbers [x, y, z]"});
+  expectInputError([&] { t.numbers("mixed"); }, {"key mixed (line 2)", "a string", "finite numbers"});
+  expectInputError([&] { t.integers("mixed"); }, {"key mixed", "an array of integers"});
+  expectInputError([&] { t.strings("names"); }, {"key names (line 3)", "an integer (3)", "strings"});
+  expectInputError([&] { t.numbers("none"); }, {"key none", "required"});
 }
 
 TEST(TomlTable, ArraysOfTablesAreNamedByIndex) {
@@ -60,19 +51,19 @@ TEST(TomlTable, ArraysOfTablesAreNamedByIndex) {
   const auto items = t.tables("item");
   ASSERT_EQ(items.size(), 2u);
   EXPECT_EQ(items[1].integer("n"), 2);
-  expectError([&] { items[1].allowOnly({"n"}); }, {"key item[1].m (line 5)", "unknown key 'm'", "n"});
-  expectError([&] { t.tables("box"); }, {"key box", "a table", "an array of tables [[box]]"});
+  expectInputError([&] { items[1].allowOnly({"n"}); }, {"key item[1].m (line 5)", "unknown key 'm'", "n"});
+  expectInputError([&] { t.tables("box"); }, {"key box", "a table", "an array of tables [[box]]"});
   EXPECT_EQ(t.requireTable("box").integer("x"), 1);
-  expectError([&] { t.requireTable("nothing"); }, {"key nothing", "required", "a table [nothing]"});
+  expectInputError([&] { t.requireTable("nothing"); }, {"key nothing", "required", "a table [nothing]"});
 }
 
 TEST(TomlTable, RangesAndSigns) {
   const toml::value v = parse("n = 0\nx = -1.5\ny = 2\n");
   const TomlTable t("t.toml", v, "");
-  expectError([&] { t.integerIn("n", 1, 10); }, {"key n (line 1)", "an integer (0)", "an integer from 1 to 10"});
+  expectInputError([&] { t.integerIn("n", 1, 10); }, {"key n (line 1)", "an integer (0)", "an integer from 1 to 10"});
   EXPECT_EQ(t.integerIn("y", 1, 10), 2);
-  expectError([&] { t.positive("x"); }, {"key x (line 2)", "-1.5", "a positive number"});
-  expectError([&] { t.nonNegativeOr("x", 0.0); }, {"key x", "a number >= 0"});
+  expectInputError([&] { t.positive("x"); }, {"key x (line 2)", "-1.5", "a positive number"});
+  expectInputError([&] { t.nonNegativeOr("x", 0.0); }, {"key x", "a number >= 0"});
   EXPECT_EQ(t.nonNegativeOr("absent", -1.0), -1.0);  // the fallback is the caller's
 }
 
@@ -81,9 +72,9 @@ TEST(TomlTable, OneQuantityInOneUnit) {
   const TomlTable t("t.toml", v, "");
   EXPECT_DOUBLE_EQ(*t.quantity({{"a_hartree", 1.0}, {"a_eV", 0.5}}), 1.0);
   EXPECT_FALSE(t.quantity({{"d_hartree", 1.0}, {"d_eV", 0.5}}).has_value());
-  expectError([&] { t.quantity({{"b_eV", 0.5}, {"b_hartree", 1.0}}); },
+  expectInputError([&] { t.quantity({{"b_eV", 0.5}, {"b_hartree", 1.0}}); },
               {"key b_hartree (line 3)", "also b_eV", "one key per quantity"});
-  expectError([&] { t.positiveQuantity({{"c_eV", 0.5}}); }, {"key c_eV (line 4)", "a value > 0"});
+  expectInputError([&] { t.positiveQuantity({{"c_eV", 0.5}}); }, {"key c_eV (line 4)", "a value > 0"});
 }
 
 }  // namespace
