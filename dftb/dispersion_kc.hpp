@@ -66,6 +66,8 @@ struct KolmogorovCrespiSettings {
   double cutoff = 0.0;                // r_c, Bohr (0: the parameter set's)
   double taperStart = -1.0;           // r_on, Bohr, in [0, r_c) (< 0: the parameter set's)
   double bondCutoff = 0.0;            // Bohr: the bond graph's covalent cutoff (> 0)
+
+  bool operator==(const KolmogorovCrespiSettings&) const = default;
 };
 
 // InputError (source "the calculator settings", the key) for values outside the ranges above.

@@ -31,6 +31,8 @@ struct DispersionSettings {
   std::vector<std::string> elements;
   std::vector<double> elementEpsilon;
   std::vector<double> elementR0;
+
+  bool operator==(const DispersionSettings&) const = default;
 };
 
 // InputError (source "the calculator settings", the key) for a value outside the ranges above.

@@ -14,26 +14,8 @@ dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
   s.band.helicalKPoints = in.helicalKPoints;
   s.band.angular = in.angular;
   s.band.electronicTemperature = in.electronicTemperature;
-  if (in.dispersion.model == "lj") {
-    s.dispersion.enabled = true;
-    s.dispersion.epsilon = in.dispersion.epsilon;
-    s.dispersion.r0 = in.dispersion.r0;
-    s.dispersion.cutoff = in.dispersion.cutoff;
-    s.dispersion.ewald = in.dispersion.summation == "ewald";
-    s.dispersion.ewaldTolerance = in.dispersion.ewaldTolerance;
-    for (const auto& [element, p] : in.dispersion.elements) {
-      s.dispersion.elements.push_back(element);
-      s.dispersion.elementEpsilon.push_back(p.epsilon);
-      s.dispersion.elementR0.push_back(p.r0);
-    }
-  }
-  if (in.dispersion.model == "kc") {
-    s.kc.enabled = true;
-    s.kc.parameters = in.dispersion.kcParameters;
-    s.kc.cutoff = in.dispersion.cutoff;
-    s.kc.taperStart = in.dispersion.kcTaperStart;
-    s.kc.bondCutoff = in.dispersion.kcBondCutoff;
-  }
+  s.dispersion = in.dispersion.lj;  // the same structs: read by dftb/dispersion_table.hpp
+  s.kc = in.dispersion.kc;
   s.scc = in.scc;  // the same struct: read by dftb/scc_table.hpp
   return s;
 }

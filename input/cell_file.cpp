@@ -14,6 +14,7 @@
 #include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
+#include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
 #include "input/cell_document.hpp"
 #include "input/cell_file_sections.hpp"
@@ -187,160 +188,6 @@ void readParameters(const TomlTable& root, CellInput& in) {
   }
 }
 
-// [dispersion] model = "kc" (dftb/dispersion_kc.hpp): the parameter set and, when given, its
-// cutoff and taper start (absent: the set's own, resolved in dftb/), and the bond cutoff.
-template <class Positive>
-void readKolmogorovCrespi(const TomlTable& t, DispersionInput& d, Positive&& positive) {
-  if (t.has("parameters")) {
-    d.kcParameters = t.string("parameters", "\"kc2005\" or \"ouyang2018\"");
-    if (d.kcParameters != "kc2005" && d.kcParameters != "ouyang2018")
-      t.fail("parameters", "\"" + d.kcParameters + "\"", "\"kc2005\" or \"ouyang2018\"");
-  }
-  if (t.has("cutoff") != t.has("taper_start"))
-    t.fail(t.has("cutoff") ? "cutoff" : "taper_start",
-           t.has("cutoff") ? "a cutoff without taper_start" : "a taper_start without cutoff",
-           "cutoff and taper_start together, or neither (the parameter set's own)");
-  d.cutoff = 0.0;
-  if (t.has("cutoff")) {
-    d.cutoff = positive("cutoff", 0.0, "Å") * units::kAngstromInBohr;
-    if (d.cutoff > kMaximumKcCutoffAngstrom * units::kAngstromInBohr || d.cutoff < 7.0 * units::kAngstromInBohr)
-      t.fail("cutoff", fmt::format("{} Å", d.cutoff * units::kBohrInAngstrom),
-             fmt::format("a cutoff in [7, {}] Å", kMaximumKcCutoffAngstrom));
-  }
-  d.kcTaperStart = -1.0;
-  if (t.has("taper_start")) {
-    const double x = t.number("taper_start", "a distance >= 0 (Å) below the cutoff");
-    if (!(x >= 0.0)) t.fail("taper_start", fmt::format("{} Å", x), "a distance >= 0 (Å)");
-    if (!(x * units::kAngstromInBohr < d.cutoff))
-      t.fail("taper_start", fmt::format("{} Å >= cutoff {} Å", x, d.cutoff * units::kBohrInAngstrom),
-             "a taper start below the cutoff");
-    d.kcTaperStart = x * units::kAngstromInBohr;
-  }
-  d.kcBondCutoff = positive("bond_cutoff", kDefaultKcBondCutoffAngstrom, "Å") * units::kAngstromInBohr;
-  if (d.kcBondCutoff * units::kBohrInAngstrom >= 2.2)
-    t.fail("bond_cutoff", fmt::format("{} Å", d.kcBondCutoff * units::kBohrInAngstrom),
-           "a covalent cutoff below 2.2 Å (the second neighbours of graphene are at 2.46 Å)");
-}
-
-// [dispersion] elements = { C = { epsilon = ..., r0 = ... }, ... }: every element of the cell.
-void readLjElements(const TomlTable& t, CellInput& in) {
-  const toml::value& v = t.at("elements");
-  const char* shape = "an inline table of the elements of the cell, such as { C = { epsilon = 0.105, "
-                      "r0 = 3.851 }, H = { epsilon = 0.044, r0 = 2.886 } } (kcal/mol, Å)";
-  if (!v.is_table()) t.fail("elements", describe(v), shape);
-  const TomlTable e(in.source, v, t.dotted("elements"));
-  const auto& species = in.cell.speciesNames;
-  for (const std::string& el : e.keys()) {
-    if (std::find(species.begin(), species.end(), el) == species.end())
-      e.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
-    const toml::value& entry = e.at(el);
-    if (!entry.is_table()) e.fail(el, describe(entry), "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
-    const TomlTable p(in.source, entry, e.dotted(el));
-    p.allowOnly({"epsilon", "r0"});
-    const double eps = p.number("epsilon", "a positive well depth (kcal/mol)");
-    if (!(eps > 0.0)) p.fail("epsilon", fmt::format("{} kcal/mol", eps), "a positive well depth (kcal/mol)");
-    const double r0 = p.number("r0", "a positive distance of the minimum (Å)");
-    if (!(r0 > 0.0)) p.fail("r0", fmt::format("{} Å", r0), "a positive distance of the minimum (Å)");
-    in.dispersion.elements[el] = {eps * units::kKcalPerMolInHartree, r0 * units::kAngstromInBohr};
-  }
-  for (const std::string& el : species)
-    if (!in.dispersion.elements.count(el))
-      t.fail("elements", "no entry for element " + el, std::string("an entry for every element of the cell: ") + shape);
-}
-
-void readDispersion(const TomlTable& root, CellInput& in) {
-  const auto t = root.table("dispersion");
-  if (!t) return;  // documented default: no dispersion
-  const std::vector<std::string> ljKeys{"epsilon", "r0", "elements", "summation", "ewald_tolerance"};
-  const std::vector<std::string> kcKeys{"taper_start", "bond_cutoff"};
-  // `parameters` belongs to both models: "uff" for lj, "kc2005" | "ouyang2018" for kc.
-  t->allowOnly({"model", "epsilon", "r0", "parameters", "elements", "cutoff", "summation", "ewald_tolerance",
-                "taper_start", "bond_cutoff"});
-  DispersionInput& d = in.dispersion;
-  const char* models = "\"none\", \"lj\" or \"kc\"";
-  d.model = t->string("model", models);
-  if (d.model == "none") {
-    for (const char* k : {"epsilon", "r0", "parameters", "elements", "cutoff", "summation", "ewald_tolerance",
-                          "taper_start", "bond_cutoff"})
-      if (t->has(k)) t->fail(k, "a value with model = \"none\"", "no parameters for \"none\"");
-    return;
-  }
-  if (d.model != "lj" && d.model != "kc") t->fail("model", "\"" + d.model + "\"", models);
-  for (const std::string& k : d.model == "lj" ? kcKeys : ljKeys)
-    if (t->has(k))
-      t->fail(k, fmt::format("a value with model = \"{}\"", d.model),
-              fmt::format("only the keys of model = \"{}\" (docs/cell-file.md)", d.model));
-  auto positive = [&](const char* key, double def, const char* unit) {
-    if (!t->has(key)) return def;
-    const double x = t->number(key, fmt::format("a positive number ({})", unit));
-    if (!(x > 0.0))
-      t->fail(key, fmt::format("{} {}", x, unit), fmt::format("a positive number ({})", unit));
-    return x;
-  };
-  if (d.model == "kc") {
-    readKolmogorovCrespi(*t, d, positive);
-    return;
-  }
-  // One of: epsilon and r0 for every pair (defaults below), parameters = "uff", elements = {...}.
-  const char* sources = "one of: epsilon and r0 (every pair), parameters = \"uff\", or elements = { ... }";
-  if (t->has("parameters") || t->has("elements")) {
-    for (const char* k : {"epsilon", "r0"})
-      if (t->has(k)) t->fail(k, std::string(k) + " together with per-element parameters", sources);
-    if (t->has("parameters") && t->has("elements"))
-      t->fail("elements", "both parameters and elements", sources);
-  }
-  if (t->has("parameters")) {
-    d.parameters = t->string("parameters", "\"uff\" (the UFF set of Rappe et al. 1992)");
-    if (d.parameters != "uff")
-      t->fail("parameters", "\"" + d.parameters + "\"", "\"uff\" (the UFF set of Rappe et al. 1992)");
-    for (const std::string& el : in.cell.speciesNames) {
-      const auto uff = uffParameters(el);
-      if (!uff)
-        t->fail("parameters", "element " + el + ", which has no UFF entry in mesochain's table (" +
-                                  uffElementRange() + ")",
-                "elements = { " + el + " = { epsilon = ..., r0 = ... }, ... } with explicit values");
-      d.elements[el] = {uff->energyKcalPerMol * units::kKcalPerMolInHartree,
-                        uff->distanceAngstrom * units::kAngstromInBohr};
-    }
-  } else if (t->has("elements")) {
-    readLjElements(*t, in);
-  } else {
-    d.epsilon =
-        positive("epsilon", kDefaultLjEpsilonKcalPerMol, "kcal/mol") * units::kKcalPerMolInHartree;
-    d.r0 = positive("r0", kDefaultLjR0Angstrom, "Å") * units::kAngstromInBohr;
-  }
-  d.cutoff = positive("cutoff", kDefaultLjCutoffAngstrom, "Å") * units::kAngstromInBohr;
-  // The image list grows with the cutoff (a 1e6 Å cutoff would list ~1e6 images per atom pair
-  // and exhaust the memory); beyond 1000 Å the neglected tail is below 3e-10 kcal/mol per atom
-  // (pi sigma epsilon r0^6 / r_c^4), and summation = "ewald" gives the exact tail anyway.
-  if (d.cutoff > kMaximumLjCutoffAngstrom * units::kAngstromInBohr)
-    t->fail("cutoff", fmt::format("{} Å", d.cutoff * units::kBohrInAngstrom),
-            fmt::format("a cutoff of at most {} Å (summation = \"ewald\" for the exact tail)",
-                        kMaximumLjCutoffAngstrom));
-  double largestR0 = d.r0;
-  for (const auto& [el, p] : d.elements) largestR0 = std::max(largestR0, p.r0);
-  if (!(d.cutoff > largestR0))
-    t->fail(t->has("cutoff") ? "cutoff" : t->has("r0") ? "r0" : t->has("elements") ? "elements" : "parameters",
-            fmt::format("cutoff {:.4g} Å <= r0 {:.4g} Å", d.cutoff * units::kBohrInAngstrom,
-                        largestR0 * units::kBohrInAngstrom),
-            "a cutoff well beyond r0 (default 30 Å)");
-  if (t->has("summation")) {
-    d.summation = t->string("summation", "\"cutoff\" or \"ewald\"");
-    if (d.summation != "cutoff" && d.summation != "ewald")
-      t->fail("summation", "\"" + d.summation + "\"", "\"cutoff\" or \"ewald\"");
-  }
-  if (t->has("ewald_tolerance")) {
-    if (d.summation != "ewald")
-      t->fail("ewald_tolerance", "a tolerance with summation = \"cutoff\"",
-              "ewald_tolerance only with summation = \"ewald\"");
-    const double x = t->number("ewald_tolerance", "a relative tolerance in [1e-13, 1e-2]");
-    if (!(x >= 1e-13 && x <= 1e-2))
-      t->fail("ewald_tolerance", fmt::format("{}", x),
-              "a relative tolerance in [1e-13, 1e-2] (tighter cannot be met in double precision)");
-    d.ewaldTolerance = x;
-  }
-}
-
 void readTask(const TomlTable& root, CellInput& in) {
   const auto t = root.table("task");
   if (!t) return;  // documented default: type = "energy"
@@ -403,7 +250,8 @@ CellInput readCellDocument(const toml::value& data, const std::string& path) {
              electronicTemperatureRange());
 
   readParameters(root, in);
-  readDispersion(root, in);
+  if (const auto d = root.table("dispersion"))  // default: no dispersion
+    dftb::readDispersionTable(*d, in.cell.speciesNames, in.dispersion);
   if (const auto scc = root.table("scc")) dftb::readSccTable(*scc, in.scc);  // default: no SCC
   readTask(root, in);
   in.cell.validate(path, kMinimumAtomDistanceAngstrom * units::kAngstromInBohr);

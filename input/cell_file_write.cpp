@@ -10,6 +10,7 @@
 #include "common/electronic_temperature.hpp"
 #include "common/setting_entries.hpp"
 #include "common/units.hpp"
+#include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
 #include "input/cell_file.hpp"
 
@@ -73,35 +74,7 @@ void writeCellFile(const std::string& path, const CellInput& in) {
     }
     out << " }\n";
   }
-  const DispersionInput& d = in.dispersion;
-  out << "\n[dispersion]\nmodel = " << quoted(d.model) << "\n";
-  if (d.model == "lj" && d.parameters == "uff") {
-    out << "parameters = \"uff\"\n";
-  } else if (d.model == "lj" && !d.elements.empty()) {
-    out << "elements = {";
-    bool first = true;
-    for (const auto& [el, p] : d.elements) {
-      out << (first ? " " : ", ")
-          << fmt::format("{} = {{ epsilon = {}, r0 = {} }}", el, real(p.epsilon * units::kHartreeInKcalPerMol),
-                         real(p.r0 * units::kBohrInAngstrom));
-      first = false;
-    }
-    out << " }  # kcal/mol, Å\n";
-  } else if (d.model == "lj") {
-    out << fmt::format("epsilon = {}  # kcal/mol\nr0 = {}  # Å\n", real(d.epsilon * units::kHartreeInKcalPerMol),
-                       real(d.r0 * units::kBohrInAngstrom));
-  }
-  if (d.model == "lj") out << fmt::format("cutoff = {}  # Å\n", real(d.cutoff * units::kBohrInAngstrom));
-  if (d.model == "kc") {
-    out << "parameters = " << quoted(d.kcParameters) << "\n";
-    if (d.cutoff > 0.0)
-      out << fmt::format("cutoff = {}  # Å\ntaper_start = {}  # Å\n",
-                         real(d.cutoff * units::kBohrInAngstrom),
-                         real(d.kcTaperStart * units::kBohrInAngstrom));
-    out << fmt::format("bond_cutoff = {}  # Å\n", real(d.kcBondCutoff * units::kBohrInAngstrom));
-  }
-  if (d.model == "lj" && d.summation == "ewald")
-    out << fmt::format("summation = \"ewald\"\newald_tolerance = {}\n", real(d.ewaldTolerance));
+  out << "\n[dispersion]\n" << tomlTableText(dftb::dispersionTableEntries(in.dispersion));
   if (in.scc.enabled) out << "\n[scc]\n" << tomlTableText(dftb::sccTableEntries(in.scc));
   const TaskInput& t = in.task;
   out << "\n[task]\ntype = " << quoted(t.type) << "\n";

@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
+#include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
 
 namespace mesochain::objective {
@@ -56,32 +57,8 @@ std::string xyzSettingsKeys(const CellInput& in) {
   }
   for (const auto& [el, l] : in.maxAngularMomentum)
     add("parameters.max_angular_momentum." + el, std::string(1, "spdf"[l]));
-  const DispersionInput& d = in.dispersion;
-  add("dispersion.model", d.model);
-  if (d.model == "lj") {
-    if (d.parameters == "uff") {
-      add("dispersion.parameters", d.parameters);
-    } else if (!d.elements.empty()) {
-      for (const auto& [el, p] : d.elements) {
-        add("dispersion.elements." + el + ".epsilon", real(p.epsilon * units::kHartreeInKcalPerMol));
-        add("dispersion.elements." + el + ".r0", real(p.r0 * units::kBohrInAngstrom));
-      }
-    } else {
-      add("dispersion.epsilon", real(d.epsilon * units::kHartreeInKcalPerMol));
-      add("dispersion.r0", real(d.r0 * units::kBohrInAngstrom));
-    }
-    add("dispersion.cutoff", real(d.cutoff * units::kBohrInAngstrom));
-    add("dispersion.summation", d.summation);
-    if (d.summation == "ewald") add("dispersion.ewald_tolerance", real(d.ewaldTolerance));
-  }
-  if (d.model == "kc") {
-    add("dispersion.parameters", d.kcParameters);
-    if (d.cutoff > 0.0) {
-      add("dispersion.cutoff", real(d.cutoff * units::kBohrInAngstrom));
-      add("dispersion.taper_start", real(d.kcTaperStart * units::kBohrInAngstrom));
-    }
-    add("dispersion.bond_cutoff", real(d.kcBondCutoff * units::kBohrInAngstrom));
-  }
+  for (const SettingEntry& e : dftb::dispersionTableEntries(in.dispersion))
+    add("dispersion." + e.key, xyzValue(e.value));
   for (const SettingEntry& e : dftb::sccTableEntries(in.scc))
     if (in.scc.enabled || e.key == "enabled") add("scc." + e.key, xyzValue(e.value));
   return out;

@@ -243,9 +243,10 @@ void readDispersion(const Node& h, CellInput& in) {
   const Node* p = m.child("Parameters");
   if (!p) m.fail("no Parameters", expected);
   requireNoAttribute(*p);
-  objective::DispersionInput& disp = in.dispersion;
-  disp.model = "lj";
-  disp.epsilon = disp.r0 = 0.0;
+  dftb::DispersionTable& disp = in.dispersion;
+  disp = dftb::DispersionTable{};
+  disp.lj.enabled = true;
+  std::map<std::string, dftb::LjElement> elements;
   if (p->children.size() == 1 && p->children.front().is("UFFParameters") && p->children.front().block) {
     allowOnly(p->children.front(), {});
     for (const auto& el : in.cell.speciesNames) {
@@ -254,7 +255,7 @@ void readDispersion(const Node& h, CellInput& in) {
         p->fail("element " + el + ", which has no UFF entry in mesochain's table (" + objective::uffElementRange() + ")",
                 "explicit Parameters { " + el + " { Distance [AA] = ... Energy [kcal/mol] = ... } }");
       // As DFTB+ (dispuffdata.F90): Å and kcal/mol with DFTB+'s constants.
-      disp.elements[el] = {uff->energyKcalPerMol * kDftbPlusKcalPerMolInHartree,
+      elements[el] = {uff->energyKcalPerMol * kDftbPlusKcalPerMolInHartree,
                            uff->distanceAngstrom * kDftbPlusAngstromInBohr};
     }
   } else {
@@ -270,16 +271,17 @@ void readDispersion(const Node& h, CellInput& in) {
       const double eps = withUnit(*c.child("Energy"), UnitKind::Energy, "au", "a positive well depth");
       if (!(r0 > 0.0)) c.child("Distance")->fail(fmt::format("{} Bohr", r0), "a positive distance");
       if (!(eps > 0.0)) c.child("Energy")->fail(fmt::format("{} Ha", eps), "a positive well depth");
-      if (disp.elements.count(c.name)) c.fail(c.name + " a second time", "each element once");
-      disp.elements[c.name] = {eps, r0};
+      if (elements.count(c.name)) c.fail(c.name + " a second time", "each element once");
+      elements[c.name] = {eps, r0};
     }
     for (const auto& el : in.cell.speciesNames)
-      if (!disp.elements.count(el)) p->fail("no parameters for " + el, "Distance and Energy for every element");
+      if (!elements.count(el)) p->fail("no parameters for " + el, "Distance and Energy for every element");
   }
   // The full r^-6 sum (helical Ewald; DFTB+ sums all pairs of a molecule and Ewald-sums the
   // r^-6 part of a periodic one): short-range part to the cell file's default cutoff.
-  disp.cutoff = objective::kDefaultLjCutoffAngstrom * units::kAngstromInBohr;
-  disp.summation = "ewald";
+  dftb::setLjElements(disp.lj, elements);
+  disp.lj.cutoff = dftb::kDefaultLjCutoffAngstrom * units::kAngstromInBohr;
+  disp.lj.ewald = true;
 }
 
 }  // namespace

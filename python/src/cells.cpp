@@ -96,30 +96,31 @@ CellInput withCell(const CellInput& in, const ObjectiveCell& cell) {
   return out;
 }
 
-py::dict dispersionDict(const objective::DispersionInput& d) {
+// Atomic units (Hartree, Bohr), the keys of the [dispersion] table (dftb/dispersion_table.hpp).
+py::dict dispersionDict(const dftb::DispersionTable& d) {
   py::dict out;
-  out["model"] = d.model;
-  if (d.model == "lj") {
-    out["epsilon"] = d.epsilon;
-    out["r0"] = d.r0;
-    out["parameters"] = d.parameters;
+  out["model"] = d.model();
+  if (d.lj.enabled) {
+    out["epsilon"] = d.lj.epsilon;
+    out["r0"] = d.lj.r0;
+    out["parameters"] = d.ljParameters;
     py::dict elements;
-    for (const auto& [el, p] : d.elements) {
+    for (const auto& [el, p] : dftb::ljElements(d.lj)) {
       py::dict e;
       e["epsilon"] = p.epsilon;
       e["r0"] = p.r0;
       elements[py::str(el)] = e;
     }
     out["elements"] = elements;
-    out["cutoff"] = d.cutoff;
-    out["summation"] = d.summation;
-    out["ewald_tolerance"] = d.ewaldTolerance;
+    out["cutoff"] = d.lj.cutoff;
+    out["summation"] = d.lj.ewald ? "ewald" : "cutoff";
+    out["ewald_tolerance"] = d.lj.ewaldTolerance;
   }
-  if (d.model == "kc") {  // atomic units; cutoff 0 and taper_start < 0: the parameter set's
-    out["parameters"] = d.kcParameters;
-    out["cutoff"] = d.cutoff;
-    out["taper_start"] = d.kcTaperStart;
-    out["bond_cutoff"] = d.kcBondCutoff;
+  if (d.kc.enabled) {  // cutoff 0 and taper_start < 0: the parameter set's
+    out["parameters"] = d.kc.parameters;
+    out["cutoff"] = d.kc.cutoff;
+    out["taper_start"] = d.kc.taperStart;
+    out["bond_cutoff"] = d.kc.bondCutoff;
   }
   return out;
 }

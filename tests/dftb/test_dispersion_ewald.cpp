@@ -99,9 +99,9 @@ model = "lj"
     return (dir / name).string();
   };
   const auto in = objective::readCellFile(write("a.toml", "summation = \"ewald\"\newald_tolerance = 1e-9\n"));
-  EXPECT_EQ(in.dispersion.summation, "ewald");
-  EXPECT_DOUBLE_EQ(in.dispersion.ewaldTolerance, 1e-9);
-  EXPECT_EQ(objective::readCellFile(write("b.toml", "")).dispersion.summation, "cutoff");
+  EXPECT_TRUE(in.dispersion.lj.ewald);
+  EXPECT_DOUBLE_EQ(in.dispersion.lj.ewaldTolerance, 1e-9);
+  EXPECT_FALSE(objective::readCellFile(write("b.toml", "")).dispersion.lj.ewald);
   EXPECT_THROW(objective::readCellFile(write("c.toml", "summation = \"fast\"\n")), InputError);
   EXPECT_THROW(objective::readCellFile(write("d.toml", "summation = \"ewald\"\newald_tolerance = 1e-16\n")),
                InputError);

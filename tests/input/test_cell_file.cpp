@@ -50,13 +50,15 @@ void expectSameInput(const CellInput& a, const CellInput& b) {
   EXPECT_EQ(a.parameterFiles, b.parameterFiles);
   EXPECT_EQ(a.parameterSet, b.parameterSet);
   EXPECT_EQ(a.maxAngularMomentum, b.maxAngularMomentum);
-  EXPECT_EQ(a.dispersion.model, b.dispersion.model);
-  EXPECT_NEAR(a.dispersion.epsilon, b.dispersion.epsilon, 1e-15);
-  EXPECT_NEAR(a.dispersion.r0, b.dispersion.r0, 1e-12);
-  EXPECT_NEAR(a.dispersion.cutoff, b.dispersion.cutoff, 1e-12);
-  EXPECT_EQ(a.dispersion.kcParameters, b.dispersion.kcParameters);
-  EXPECT_NEAR(a.dispersion.kcTaperStart, b.dispersion.kcTaperStart, 1e-12);
-  EXPECT_NEAR(a.dispersion.kcBondCutoff, b.dispersion.kcBondCutoff, 1e-12);
+  EXPECT_EQ(a.dispersion.model(), b.dispersion.model());
+  EXPECT_NEAR(a.dispersion.lj.epsilon, b.dispersion.lj.epsilon, 1e-15);
+  EXPECT_NEAR(a.dispersion.lj.r0, b.dispersion.lj.r0, 1e-12);
+  EXPECT_NEAR(a.dispersion.lj.cutoff, b.dispersion.lj.cutoff, 1e-12);
+  EXPECT_NEAR(a.dispersion.kc.cutoff, b.dispersion.kc.cutoff, 1e-12);
+  EXPECT_EQ(a.dispersion.lj.ewald, b.dispersion.lj.ewald);
+  EXPECT_EQ(a.dispersion.kc.parameters, b.dispersion.kc.parameters);
+  EXPECT_NEAR(a.dispersion.kc.taperStart, b.dispersion.kc.taperStart, 1e-12);
+  EXPECT_NEAR(a.dispersion.kc.bondCutoff, b.dispersion.kc.bondCutoff, 1e-12);
   EXPECT_EQ(a.scc.enabled, b.scc.enabled);
   EXPECT_EQ(a.scc.chargeTolerance, b.scc.chargeTolerance);
   EXPECT_EQ(a.scc.energyTolerance, b.scc.energyTolerance);
@@ -108,7 +110,7 @@ TEST(CellFile, ReadsTheExamples) {
   EXPECT_EQ(in.parameterSet, "pbc-0-3");
   ASSERT_EQ(in.parameterFiles.size(), 1u);
   EXPECT_TRUE(fs::equivalent(in.parameterFiles.at("C-C"), kSource + "/params/pbc-0-3/C-C.skf"));
-  EXPECT_EQ(in.dispersion.model, "none");
+  EXPECT_EQ(in.dispersion.model(), "none");
   EXPECT_EQ(in.task.type, "relax");
   EXPECT_TRUE(in.task.relaxTranslation);
   EXPECT_EQ(in.task.maxSteps, 500);
@@ -145,10 +147,10 @@ TEST(CellFile, ReadsInlineAtomsExplicitTablesAndDispersion) {
   EXPECT_NEAR(ring.cell.positions(0, 0), 2.74 * kAngstromInBohr, 1e-12);
   EXPECT_TRUE(fs::equivalent(ring.parameterFiles.at("C-C"), kSource + "/params/pbc-0-3/C-C.skf"));
   EXPECT_EQ(ring.maxAngularMomentum.at("C"), 1);
-  EXPECT_EQ(ring.dispersion.model, "lj");
-  EXPECT_NEAR(ring.dispersion.epsilon, 0.069 * units::kKcalPerMolInHartree, 1e-15);
-  EXPECT_NEAR(ring.dispersion.r0, 3.80 * kAngstromInBohr, 1e-12);
-  EXPECT_NEAR(ring.dispersion.cutoff, 25.0 * kAngstromInBohr, 1e-12);
+  EXPECT_EQ(ring.dispersion.model(), "lj");
+  EXPECT_NEAR(ring.dispersion.lj.epsilon, 0.069 * units::kKcalPerMolInHartree, 1e-15);
+  EXPECT_NEAR(ring.dispersion.lj.r0, 3.80 * kAngstromInBohr, 1e-12);
+  EXPECT_NEAR(ring.dispersion.lj.cutoff, 25.0 * kAngstromInBohr, 1e-12);
   EXPECT_EQ(ring.task.type, "forces");
 
   const CellInput chain = readCellFile(kData + "ch_chain_bohr.toml");
@@ -190,18 +192,18 @@ TEST(CellFile, ReadsAndWritesKolmogorovCrespi) {
   const fs::path dir = scratch();
   writeText(dir / "kc.toml", kBase + "[dispersion]\nmodel = \"kc\"\n");
   const CellInput plain = readCellFile((dir / "kc.toml").string());
-  EXPECT_EQ(plain.dispersion.model, "kc");
-  EXPECT_EQ(plain.dispersion.kcParameters, "kc2005");
-  EXPECT_EQ(plain.dispersion.cutoff, 0.0);
-  EXPECT_LT(plain.dispersion.kcTaperStart, 0.0);
-  EXPECT_NEAR(plain.dispersion.kcBondCutoff, 1.7 * kAngstromInBohr, 1e-12);
+  EXPECT_EQ(plain.dispersion.model(), "kc");
+  EXPECT_EQ(plain.dispersion.kc.parameters, "kc2005");
+  EXPECT_EQ(plain.dispersion.kc.cutoff, 0.0);
+  EXPECT_LT(plain.dispersion.kc.taperStart, 0.0);
+  EXPECT_NEAR(plain.dispersion.kc.bondCutoff, 1.7 * kAngstromInBohr, 1e-12);
   writeText(dir / "kc2.toml", kBase + "[dispersion]\nmodel = \"kc\"\nparameters = \"ouyang2018\"\n"
                                       "cutoff = 14\ntaper_start = 2.5\nbond_cutoff = 1.8\n");
   const CellInput in = readCellFile((dir / "kc2.toml").string());
-  EXPECT_EQ(in.dispersion.kcParameters, "ouyang2018");
-  EXPECT_NEAR(in.dispersion.cutoff, 14.0 * kAngstromInBohr, 1e-12);
-  EXPECT_NEAR(in.dispersion.kcTaperStart, 2.5 * kAngstromInBohr, 1e-12);
-  EXPECT_NEAR(in.dispersion.kcBondCutoff, 1.8 * kAngstromInBohr, 1e-12);
+  EXPECT_EQ(in.dispersion.kc.parameters, "ouyang2018");
+  EXPECT_NEAR(in.dispersion.kc.cutoff, 14.0 * kAngstromInBohr, 1e-12);
+  EXPECT_NEAR(in.dispersion.kc.taperStart, 2.5 * kAngstromInBohr, 1e-12);
+  EXPECT_NEAR(in.dispersion.kc.bondCutoff, 1.8 * kAngstromInBohr, 1e-12);
   for (const CellInput* c : {&plain, &in}) {
     const std::string out = (dir / "written.toml").string();
     writeCellFile(out, *c);

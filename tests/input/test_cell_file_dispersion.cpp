@@ -52,14 +52,14 @@ std::string errorOf(const std::string& dispersion) {
 
 TEST(CellFileDispersion, UffParametersForEveryElement) {
   const CellInput in = readWith("parameters = \"uff\"\n");
-  EXPECT_EQ(in.dispersion.parameters, "uff");
-  ASSERT_EQ(in.dispersion.elements.size(), 2u);
+  EXPECT_EQ(in.dispersion.ljParameters, "uff");
+  ASSERT_EQ(in.dispersion.lj.elements.size(), 2u);
   // Rappe et al. 1992, Table 1: C 3.851 Å / 0.105 kcal/mol, H 2.886 Å / 0.044 kcal/mol.
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("C").r0, 3.851 * units::kAngstromInBohr);
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("C").epsilon, 0.105 * units::kKcalPerMolInHartree);
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("H").r0, 2.886 * units::kAngstromInBohr);
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("H").epsilon, 0.044 * units::kKcalPerMolInHartree);
-  EXPECT_EQ(in.dispersion.epsilon, 0.0);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("C").r0, 3.851 * units::kAngstromInBohr);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("C").epsilon, 0.105 * units::kKcalPerMolInHartree);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("H").r0, 2.886 * units::kAngstromInBohr);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("H").epsilon, 0.044 * units::kKcalPerMolInHartree);
+  EXPECT_EQ(in.dispersion.lj.epsilon, 0.0);
   ASSERT_TRUE(uffParameters("Kr"));
   EXPECT_FALSE(uffParameters("Rb"));  // beyond the table: explicit values needed
 }
@@ -67,9 +67,9 @@ TEST(CellFileDispersion, UffParametersForEveryElement) {
 TEST(CellFileDispersion, ExplicitElements) {
   const CellInput in =
       readWith("elements = { C = { epsilon = 0.069, r0 = 3.80 }, H = { epsilon = 0.05, r0 = 3.0 } }\n");
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("C").epsilon, 0.069 * units::kKcalPerMolInHartree);
-  EXPECT_DOUBLE_EQ(in.dispersion.elements.at("H").r0, 3.0 * units::kAngstromInBohr);
-  EXPECT_TRUE(in.dispersion.parameters.empty());
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("C").epsilon, 0.069 * units::kKcalPerMolInHartree);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(in.dispersion.lj).at("H").r0, 3.0 * units::kAngstromInBohr);
+  EXPECT_TRUE(in.dispersion.ljParameters.empty());
 }
 
 TEST(CellFileDispersion, ErrorsNameTheKey) {
@@ -94,12 +94,12 @@ TEST(CellFileDispersion, WriterRoundTrip) {
     const fs::path out = scratch() / "written.toml";
     writeCellFile(out.string(), in);
     const CellInput back = readCellFile(out.string());
-    EXPECT_EQ(back.dispersion.parameters, in.dispersion.parameters);
-    EXPECT_EQ(back.dispersion.summation, in.dispersion.summation);
-    ASSERT_EQ(back.dispersion.elements.size(), in.dispersion.elements.size());
-    for (const auto& [el, p] : in.dispersion.elements) {
-      EXPECT_NEAR(back.dispersion.elements.at(el).epsilon, p.epsilon, 1e-18) << el;
-      EXPECT_NEAR(back.dispersion.elements.at(el).r0, p.r0, 1e-14) << el;
+    EXPECT_EQ(back.dispersion.ljParameters, in.dispersion.ljParameters);
+    EXPECT_EQ(back.dispersion.lj.ewald, in.dispersion.lj.ewald);
+    ASSERT_EQ(back.dispersion.lj.elements.size(), in.dispersion.lj.elements.size());
+    for (const auto& [el, p] : dftb::ljElements(in.dispersion.lj)) {
+      EXPECT_NEAR(dftb::ljElements(back.dispersion.lj).at(el).epsilon, p.epsilon, 1e-18) << el;
+      EXPECT_NEAR(dftb::ljElements(back.dispersion.lj).at(el).r0, p.r0, 1e-14) << el;
     }
   }
 }

@@ -62,7 +62,7 @@ TEST(DftbInput, DefaultsAndTaskAreDftbPlus) {
   const auto in = read("defaults", methane("", "Analysis { PrintForces = No }\n"));
   EXPECT_EQ(in.task.type, "energy");
   EXPECT_FALSE(in.scc.enabled);
-  EXPECT_EQ(in.dispersion.model, "none");
+  EXPECT_EQ(in.dispersion.model(), "none");
   EXPECT_EQ(in.helicalKPoints, 1);
   EXPECT_EQ(in.maxAngularMomentum.at("C"), 1);
   EXPECT_EQ(in.maxAngularMomentum.at("H"), 0);
@@ -194,21 +194,21 @@ TEST(DftbInput, TablesNameTheMissingFile) {
 TEST(DftbInput, LennardJonesParametersAsDftbPlusConvertsThem) {
   // UFFParameters {}: Rappe et al. 1992 values with DFTB+'s Å and kcal/mol.
   const auto uff = read("uff", methane("  Dispersion = LennardJones { Parameters = UFFParameters {} }"));
-  EXPECT_EQ(uff.dispersion.model, "lj");
-  EXPECT_EQ(uff.dispersion.summation, "ewald");
-  ASSERT_EQ(uff.dispersion.elements.size(), 2u);
-  EXPECT_DOUBLE_EQ(uff.dispersion.elements.at("C").r0, 3.851 / 0.529177249);
-  EXPECT_DOUBLE_EQ(uff.dispersion.elements.at("C").epsilon, 0.105 * 0.0015946683859874898);
-  EXPECT_DOUBLE_EQ(uff.dispersion.elements.at("H").r0, 2.886 / 0.529177249);
-  EXPECT_DOUBLE_EQ(uff.dispersion.elements.at("H").epsilon, 0.044 * 0.0015946683859874898);
+  EXPECT_EQ(uff.dispersion.model(), "lj");
+  EXPECT_TRUE(uff.dispersion.lj.ewald);
+  ASSERT_EQ(uff.dispersion.lj.elements.size(), 2u);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(uff.dispersion.lj).at("C").r0, 3.851 / 0.529177249);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(uff.dispersion.lj).at("C").epsilon, 0.105 * 0.0015946683859874898);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(uff.dispersion.lj).at("H").r0, 2.886 / 0.529177249);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(uff.dispersion.lj).at("H").epsilon, 0.044 * 0.0015946683859874898);
   // Explicit values in their units (Bohr and Hartree without one).
   const auto ex = read("lj-explicit", methane("  Dispersion = LennardJones {\n    Parameters {\n"
                                               "      C { Distance [AA] = 3.80; Energy [kcal/mol] = 0.069 }\n"
                                               "      H { Distance = 5.0; Energy = 1e-4 }\n    }\n  }"));
-  EXPECT_DOUBLE_EQ(ex.dispersion.elements.at("C").r0, 3.80 / 0.529177249);
-  EXPECT_DOUBLE_EQ(ex.dispersion.elements.at("C").epsilon, 0.069 * 0.0015946683859874898);
-  EXPECT_EQ(ex.dispersion.elements.at("H").r0, 5.0);
-  EXPECT_EQ(ex.dispersion.elements.at("H").epsilon, 1e-4);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(ex.dispersion.lj).at("C").r0, 3.80 / 0.529177249);
+  EXPECT_DOUBLE_EQ(dftb::ljElements(ex.dispersion.lj).at("C").epsilon, 0.069 * 0.0015946683859874898);
+  EXPECT_EQ(dftb::ljElements(ex.dispersion.lj).at("H").r0, 5.0);
+  EXPECT_EQ(dftb::ljElements(ex.dispersion.lj).at("H").epsilon, 1e-4);
   const std::string m = errorOf([] {
     read("lj-partial", methane("  Dispersion = LennardJones {\n    Parameters {\n      C { Distance = 7; Energy = 1e-4 }\n    }\n  }"));
   });
