@@ -197,31 +197,32 @@ void readDispersionTable(const TomlTable& t, const std::vector<std::string>& spe
 }
 
 SettingEntries dispersionTableEntries(const DispersionTable& d) {
+  // Every member of both settings named: a new one fails to compile here until it has its entry.
+  const auto& [ljEnabled, epsilon, r0, ljCutoff, ewald, ewaldTolerance, elements, elementEpsilon, elementR0] = d.lj;
+  const auto& [kcEnabled, kcParameters, kcCutoff, taperStart, bondCutoff] = d.kc;
   SettingEntries out{{"model", toml::value(d.model()), ""}};
-  if (d.lj.enabled) {
-    const DispersionSettings& lj = d.lj;
+  if (ljEnabled) {
     if (d.ljParameters == "uff") {
       out.push_back({"parameters", toml::value("uff"), ""});
-    } else if (!lj.elements.empty()) {
-      for (const auto& [el, p] : ljElements(lj)) {
-        out.push_back({"elements." + el + ".epsilon", kcalPerMol(p.epsilon), "kcal/mol"});
-        out.push_back({"elements." + el + ".r0", angstrom(p.r0), "Å"});
+    } else if (!elements.empty()) {
+      for (std::size_t k = 0; k < elements.size(); ++k) {
+        out.push_back({"elements." + elements[k] + ".epsilon", kcalPerMol(elementEpsilon.at(k)), "kcal/mol"});
+        out.push_back({"elements." + elements[k] + ".r0", angstrom(elementR0.at(k)), "Å"});
       }
     } else {
-      out.push_back({"epsilon", kcalPerMol(lj.epsilon), "kcal/mol"});
-      out.push_back({"r0", angstrom(lj.r0), "Å"});
+      out.push_back({"epsilon", kcalPerMol(epsilon), "kcal/mol"});
+      out.push_back({"r0", angstrom(r0), "Å"});
     }
-    out.push_back({"cutoff", angstrom(lj.cutoff), "Å"});
-    out.push_back({"summation", toml::value(lj.ewald ? "ewald" : "cutoff"), ""});
-    if (lj.ewald) out.push_back({"ewald_tolerance", real(lj.ewaldTolerance), ""});
-  } else if (d.kc.enabled) {
-    const KolmogorovCrespiSettings& kc = d.kc;
-    out.push_back({"parameters", toml::value(kc.parameters), ""});
-    if (kc.cutoff > 0.0) {  // else the parameter set's cutoff and taper start
-      out.push_back({"cutoff", angstrom(kc.cutoff), "Å"});
-      out.push_back({"taper_start", angstrom(kc.taperStart), "Å"});
+    out.push_back({"cutoff", angstrom(ljCutoff), "Å"});
+    out.push_back({"summation", toml::value(ewald ? "ewald" : "cutoff"), ""});
+    if (ewald) out.push_back({"ewald_tolerance", real(ewaldTolerance), ""});
+  } else if (kcEnabled) {
+    out.push_back({"parameters", toml::value(kcParameters), ""});
+    if (kcCutoff > 0.0) {  // else the parameter set's cutoff and taper start
+      out.push_back({"cutoff", angstrom(kcCutoff), "Å"});
+      out.push_back({"taper_start", angstrom(taperStart), "Å"});
     }
-    out.push_back({"bond_cutoff", angstrom(kc.bondCutoff), "Å"});
+    out.push_back({"bond_cutoff", angstrom(bondCutoff), "Å"});
   }
   return out;
 }

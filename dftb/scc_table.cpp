@@ -37,15 +37,18 @@ void readSccTable(const TomlTable& t, SccSettings& s) {
 }
 
 SettingEntries sccTableEntries(const SccSettings& s) {
-  return {{"enabled", toml::value(s.enabled), ""},
-          {"charge_tolerance", toml::value(s.chargeTolerance), "e"},
-          {"energy_tolerance", toml::value(s.energyTolerance), "Ha"},
-          {"max_iterations", toml::value(s.maxIterations), ""},
-          {"mixer", toml::value(s.mixer), ""},
-          {"mixing", toml::value(s.mixing), ""},
-          {"ewald_tolerance", toml::value(s.ewaldTolerance), ""},
-          {"stop_if_unconverged", toml::value(s.stopIfUnconverged), ""},
-          {"warm_start", toml::value(s.warmStart), ""}};
+  // Every member named: a new one fails to compile here until it has its entry.
+  const auto& [enabled, chargeTolerance, energyTolerance, maxIterations, mixer, mixing, ewaldTolerance,
+               stopIfUnconverged, warmStart] = s;
+  return {{"enabled", toml::value(enabled), ""},
+          {"charge_tolerance", toml::value(chargeTolerance), "e"},
+          {"energy_tolerance", toml::value(energyTolerance), "Ha"},
+          {"max_iterations", toml::value(maxIterations), ""},
+          {"mixer", toml::value(mixer), ""},
+          {"mixing", toml::value(mixing), ""},
+          {"ewald_tolerance", toml::value(ewaldTolerance), ""},
+          {"stop_if_unconverged", toml::value(stopIfUnconverged), ""},
+          {"warm_start", toml::value(warmStart), ""}};
 }
 
 }  // namespace mesochain::dftb

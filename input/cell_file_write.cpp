@@ -12,6 +12,8 @@
 #include "common/units.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
+#include "dftb/settings_tables.hpp"
+#include "input/cell_calculator.hpp"
 #include "input/cell_file.hpp"
 
 namespace mesochain::objective {
@@ -43,14 +45,9 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   out << fmt::format("translation = {}  # Å\ntwist = {}  # degrees\nrotation_order = {}\n\n",
                      real(s.translation() * units::kBohrInAngstrom), real(twist),
                      s.rotationOrder());
-  out << "[kpoints]\n";
-  if (!s.isRing()) out << fmt::format("helical = {}\n", in.helicalKPoints);
-  if (in.angular.samples > 0)
-    out << fmt::format("angular = {}\n", in.angular.samples);
-  else
-    out << "angular = \"all\"\n";
-  out << fmt::format("\n[electrons]\ntemperature = {}  # K\n\n[parameters]\n",
-                     real(in.electronicTemperature / units::kBoltzmannHartreePerKelvin));
+  const dftb::BandSettings band = calculatorSettings(in).band;
+  out << "[kpoints]\n" << tomlTableText(dftb::kpointsTableEntries(band, s.isRing()));
+  out << "\n[electrons]\n" << tomlTableText(dftb::electronsTableEntries(band)) << "\n[parameters]\n";
   std::map<std::string, std::string> fromSet;
   if (!in.parameterSet.empty()) {
     out << "set = " << quoted(in.parameterSet) << "\n";

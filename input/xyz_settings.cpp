@@ -8,6 +8,8 @@
 #include "common/units.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
+#include "dftb/settings_tables.hpp"
+#include "input/cell_calculator.hpp"
 
 namespace mesochain::objective {
 
@@ -41,10 +43,10 @@ std::string xyzSettingsKeys(const CellInput& in) {
   auto add = [&out, &in](const std::string& key, const std::string& value) {
     out += " mesochain:" + key + "=" + token(value, key, in.source);
   };
-  auto real = [](double x) { return fmt::format("{}", x); };
-  if (!in.cell.symmetry.isRing()) add("kpoints.helical", std::to_string(in.helicalKPoints));
-  add("kpoints.angular", in.angular.samples > 0 ? std::to_string(in.angular.samples) : "all");
-  add("electrons.temperature", real(in.electronicTemperature / units::kBoltzmannHartreePerKelvin));
+  const dftb::BandSettings band = calculatorSettings(in).band;
+  for (const SettingEntry& e : dftb::kpointsTableEntries(band, in.cell.symmetry.isRing()))
+    add("kpoints." + e.key, xyzValue(e.value));
+  for (const SettingEntry& e : dftb::electronsTableEntries(band)) add("electrons." + e.key, xyzValue(e.value));
   std::map<std::string, std::string> fromSet;
   if (!in.parameterSet.empty()) {
     add("parameters.set", in.parameterSet);

@@ -20,6 +20,7 @@
 #include "objective/core/kgrid.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"
 #include "objective/drivers/scan_reference.hpp"
+#include "dftb/settings_tables.hpp"
 #include "objective/drivers/settings_fields.hpp"
 
 namespace mesochain::objective {
@@ -289,7 +290,10 @@ std::map<std::string, std::string> scanIdentity(const ObjectiveCell& cell,
                                                 const dftb::CalculatorSettings& c,
                                                 const ScanSettings& s) {
   std::map<std::string, std::string> out;
-  collectSettings("calculator.", c, out);
+  // The calculator settings as the cell file writes them (a scanned cell is never a ring).
+  for (const dftb::SettingsTable& table : dftb::calculatorSettingsTables(c, false))
+    for (const SettingEntry& e : table.entries)
+      out["calculator." + table.name + "." + e.key] = tomlValueText(e.value);
   collectSettings("scan.", s, out);
   out["cell"] = cellText(cell);
   return shortened(std::move(out));
@@ -297,7 +301,7 @@ std::map<std::string, std::string> scanIdentity(const ObjectiveCell& cell,
 
 std::string scanInputHash(const ObjectiveCell& cell, const dftb::CalculatorSettings& c,
                           const ScanSettings& s) {
-  std::string t = "mesochain-scan-3\n";
+  std::string t = "mesochain-scan-4\n";
   for (const auto& [key, value] : scanIdentity(cell, c, s)) t += key + " " + value + "\n";
   return fnv1a(t);
 }
@@ -328,6 +332,12 @@ namespace {
                                        "{})", old.inputHash, hash),
                      "a checkpoint of this scan with the same settings: " + fix);
   }
+  if (old.settings.count("calculator.band.helical_kpoints"))
+    throw InputError(path, "key settings",
+                     "a checkpoint of an earlier mesochain (format 3), which named the calculator "
+                     "settings by their members (calculator.band.*) rather than by the cell file's "
+                     "tables (calculator.kpoints.*), so its points cannot be matched to this input",
+                     "a checkpoint of this version: " + fix);
   const std::string list = settingChanges(old.settings, now, "checkpoint");
   throw InputError(path, "key settings",
                    fmt::format("a checkpoint of another scan input, changed: {}",

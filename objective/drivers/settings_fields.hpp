@@ -1,8 +1,10 @@
 #pragma once
-// Every data member of the settings a scan point is computed from, named and visited in one
-// place: forEachField(settings, f) calls f(name, member, role) for each member, nested settings
-// as their own members. Each visitor takes the members by a structured binding, which names
-// every non-static member of the struct or does not compile: a member added to one of these
+// Every data member of the driver settings a scan point is computed from (relaxation and scan),
+// named and visited in one place: forEachField(settings, f) calls f(name, member, role) for each
+// member, nested settings as their own members. The calculator settings are not listed here:
+// the scan identity takes them as the cell file's tables (dftb/settings_tables.hpp). Each
+// visitor takes the members by a structured binding, which names every non-static member of
+// the struct or does not compile: a member added to one of these
 // structs stops the build here until it is given a name and a role (so it cannot be left out
 // of the scan identity silently). tests/drivers/test_settings_fields.cpp checks that each
 // visitor reaches every member (aggregate member count) and that changing any Role::Result
@@ -11,7 +13,6 @@
 #include <type_traits>
 #include <vector>
 
-#include "dftb/calculator.hpp"
 #include "objective/drivers/scan.hpp"
 
 namespace mesochain::objective {
@@ -26,70 +27,6 @@ template <class S, class F>
 void forEachField(S& s, F&& f) {
   auto& [samples] = s;
   f("samples", samples, FieldRole::Result);
-}
-
-template <class S, class F>
-  requires std::is_same_v<std::remove_const_t<S>, dftb::BandSettings>
-void forEachField(S& s, F&& f) {
-  auto& [helicalKPoints, angular, electronicTemperature, eigenvectors] = s;
-  f("helical_kpoints", helicalKPoints, FieldRole::Result);
-  f("angular", angular, FieldRole::Result);
-  f("electronic_temperature_hartree", electronicTemperature, FieldRole::Result);
-  // The eigenvector path gives the same results to rounding (tests/dftb/test_eigenvector_paths.cpp).
-  f("eigenvectors", eigenvectors, FieldRole::Run);
-}
-
-template <class S, class F>
-  requires std::is_same_v<std::remove_const_t<S>, dftb::DispersionSettings>
-void forEachField(S& s, F&& f) {
-  auto& [enabled, epsilon, r0, cutoff, ewald, ewaldTolerance, elements, elementEpsilon, elementR0] = s;
-  f("enabled", enabled, FieldRole::Result);
-  f("epsilon_hartree", epsilon, FieldRole::Result);
-  f("r0_bohr", r0, FieldRole::Result);
-  f("cutoff_bohr", cutoff, FieldRole::Result);
-  f("ewald", ewald, FieldRole::Result);
-  f("ewald_tolerance", ewaldTolerance, FieldRole::Result);
-  f("elements", elements, FieldRole::Result);
-  f("element_epsilon_hartree", elementEpsilon, FieldRole::Result);
-  f("element_r0_bohr", elementR0, FieldRole::Result);
-}
-
-template <class S, class F>
-  requires std::is_same_v<std::remove_const_t<S>, dftb::KolmogorovCrespiSettings>
-void forEachField(S& s, F&& f) {
-  auto& [enabled, parameters, cutoff, taperStart, bondCutoff] = s;
-  f("enabled", enabled, FieldRole::Result);
-  f("parameters", parameters, FieldRole::Result);
-  f("cutoff_bohr", cutoff, FieldRole::Result);
-  f("taper_start_bohr", taperStart, FieldRole::Result);
-  f("bond_cutoff_bohr", bondCutoff, FieldRole::Result);
-}
-
-template <class S, class F>
-  requires std::is_same_v<std::remove_const_t<S>, dftb::SccSettings>
-void forEachField(S& s, F&& f) {
-  auto& [enabled, chargeTolerance, energyTolerance, maxIterations, mixer, mixing, ewaldTolerance,
-         stopIfUnconverged, warmStart] = s;
-  f("enabled", enabled, FieldRole::Result);
-  f("charge_tolerance", chargeTolerance, FieldRole::Result);
-  f("energy_tolerance", energyTolerance, FieldRole::Result);
-  f("max_iterations", maxIterations, FieldRole::Result);
-  f("mixer", mixer, FieldRole::Result);
-  f("mixing", mixing, FieldRole::Result);
-  f("ewald_tolerance", ewaldTolerance, FieldRole::Result);
-  f("stop_if_unconverged", stopIfUnconverged, FieldRole::Result);
-  // The warm start changes the converged charges within the tolerances.
-  f("warm_start", warmStart, FieldRole::Result);
-}
-
-template <class S, class F>
-  requires std::is_same_v<std::remove_const_t<S>, dftb::CalculatorSettings>
-void forEachField(S& s, F&& f) {
-  auto& [band, dispersion, kc, scc] = s;
-  f("band", band, FieldRole::Result);
-  f("dispersion", dispersion, FieldRole::Result);
-  f("kc", kc, FieldRole::Result);
-  f("scc", scc, FieldRole::Result);
 }
 
 template <class S, class F>
