@@ -101,10 +101,10 @@ int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std:
   // Unless asked otherwise: kappa points that sample a 300 Å length of tube (N T = 300 Å),
   // which converges metallic tubes at 300 K to about 1e-8 Ha/atom (mesochain bench kpoints).
   const double t = in.cell.symmetry.translation();
-  in.helicalKPoints = o.kpoints > 0 ? o.kpoints
+  in.band.helicalKPoints = o.kpoints > 0 ? o.kpoints
                       : t > 0 ? std::max(8, static_cast<int>(std::ceil(300.0 * units::kAngstromInBohr / t)))
                               : 1;
-  in.electronicTemperature = o.kelvin * units::kBoltzmannHartreePerKelvin;
+  in.band.electronicTemperature = o.kelvin * units::kBoltzmannHartreePerKelvin;
   in.parameterSet = o.set;
   in.parameterFiles = objective::parameterSetFiles(o.set, in.cell.speciesNames, "<command line>", "--parameter-set");
   in.task.type = o.task;
@@ -115,7 +115,7 @@ int writeBuilt(objective::ObjectiveCell cell, const CommonOptions& o, const std:
                            "rotation order {}, {} kappa points\n",
                            path, what, in.cell.atomCount(), t * units::kBohrInAngstrom,
                            in.cell.symmetry.twist() / units::kDegree,
-                           in.cell.symmetry.rotationOrder(), in.helicalKPoints);
+                           in.cell.symmetry.rotationOrder(), in.band.helicalKPoints);
   return 0;
 }
 

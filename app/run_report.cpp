@@ -52,11 +52,11 @@ json resultJson(const objective::CellInput& input, const objective::ObjectiveCel
                                               : sym.twist() / units::kDegree},
                {"rotation_order", sym.rotationOrder()},
                {"closed_ring", sym.isRing()}};
-  j["kpoints"] = {{"helical", sym.isRing() ? 0 : input.helicalKPoints},
-                  {"angular", input.angular.samples == 0 ? json("all") : json(input.angular.samples)},
+  j["kpoints"] = {{"helical", sym.isRing() ? 0 : input.band.helicalKPoints},
+                  {"angular", input.band.angular.samples == 0 ? json("all") : json(input.band.angular.samples)},
                   {"reduced_points", static_cast<int>(extra(r, "kpoints"))}};
   j["electronic_temperature_kelvin"] =
-      input.electronicTemperature / units::kBoltzmannHartreePerKelvin;
+      input.band.electronicTemperature / units::kBoltzmannHartreePerKelvin;
   // Every entry the terms reported (dftb/energy_ledger.hpp), then the totals.
   json energies;
   for (const dftb::LedgerEntry& e : r.energies.entries()) energies[e.name] = perCellAndAtom(e.value, n);
@@ -127,7 +127,7 @@ void printSummary(std::ostream& out, const objective::CellInput& input,
                        sym.translation() * kBohrInAngstrom, sym.twist() / units::kDegree,
                        sym.rotationOrder());
   out << fmt::format("k-points: {} reduced, kT = {:.1f} K\n", static_cast<int>(extra(r, "kpoints")),
-                     input.electronicTemperature / units::kBoltzmannHartreePerKelvin);
+                     input.band.electronicTemperature / units::kBoltzmannHartreePerKelvin);
   if (relax)
     out << fmt::format("relaxation: {} after {} evaluations\n",
                        relax->converged ? "converged" : "NOT converged", relax->evaluations);

@@ -9,15 +9,10 @@
 #include <vector>
 
 #include "common/setting_entries.hpp"
+#include "dftb/band_table.hpp"
 #include "dftb/calculator.hpp"
 
 namespace mesochain::dftb {
-
-// [kpoints]: helical (not for a closed ring, which has no helical wave number) and angular (an
-// integer number of samples or "all").
-SettingEntries kpointsTableEntries(const BandSettings& s, bool ring);
-// [electrons]: temperature in K.
-SettingEntries electronsTableEntries(const BandSettings& s);
 
 struct SettingsTable {
   std::string name;  // the cell file's table, e.g. "scc"

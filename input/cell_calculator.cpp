@@ -11,12 +11,12 @@ std::shared_ptr<const dftb::ParameterSet> loadParameters(const CellInput& in) {
 
 dftb::CalculatorSettings calculatorSettings(const CellInput& in) {
   dftb::CalculatorSettings s;
-  s.band.helicalKPoints = in.helicalKPoints;
-  s.band.angular = in.angular;
-  s.band.electronicTemperature = in.electronicTemperature;
-  s.dispersion = in.dispersion.lj;  // the same structs: read by dftb/dispersion_table.hpp
+  // The structs the tables' readers filled (dftb/band_table.hpp, dispersion_table.hpp,
+  // scc_table.hpp), handed over as they are.
+  s.band = in.band;
+  s.dispersion = in.dispersion.lj;
   s.kc = in.dispersion.kc;
-  s.scc = in.scc;  // the same struct: read by dftb/scc_table.hpp
+  s.scc = in.scc;
   return s;
 }
 

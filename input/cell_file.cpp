@@ -14,6 +14,7 @@
 #include "common/electronic_temperature.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
+#include "dftb/band_table.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
 #include "input/cell_document.hpp"
@@ -238,16 +239,14 @@ CellInput readCellDocument(const toml::value& data, const std::string& path) {
   if (format != 1) root.fail("format", std::to_string(format), "format = 1");
 
   detail::readStructure(root, in);
-  detail::readKPoints(root, in);
-
+  const bool ring = in.cell.symmetry.isRing();
+  if (const auto k = root.table("kpoints"))
+    dftb::readKPointsTable(*k, ring, in.band);
+  else if (!ring)  // a ring without [kpoints]: every angular quantum number, no helical k-points
+    root.missing("kpoints", "a table [kpoints] with helical = N (the screw needs helical k-points)");
   const auto el = root.table("electrons");
   if (!el) root.missing("electrons", "a table [electrons] with temperature (K)");
-  el->allowOnly({"temperature"});
-  const double kelvin = el->number("temperature", "a positive temperature (K)");
-  in.electronicTemperature = kelvin * units::kBoltzmannHartreePerKelvin;
-  if (!electronicTemperatureInRange(in.electronicTemperature))
-    el->fail("temperature", describeElectronicTemperature(in.electronicTemperature),
-             electronicTemperatureRange());
+  dftb::readElectronsTable(*el, in.band);
 
   readParameters(root, in);
   if (const auto d = root.table("dispersion"))  // default: no dispersion

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dftb/band_structure.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_term.hpp"
 #include "objective/core/cell.hpp"
@@ -32,9 +33,9 @@ struct TaskInput {
 struct CellInput {
   std::string source;  // the file path
   ObjectiveCell cell;
-  int helicalKPoints = 1;
-  AngularSampling angular;
-  double electronicTemperature = 0;  // k_B T in Hartree (input in K)
+  // [kpoints] and [electrons] (dftb/band_table.hpp): helical k-points, angular sampling and the
+  // electronic temperature k_B T in Hartree (input in K).
+  dftb::BandSettings band;
   // "A-B" -> resolved path, for all ordered pairs of the species in the cell.
   std::map<std::string, std::string> parameterFiles;
   // The name of the parameter set when `[parameters] set = ...` was used (else empty).

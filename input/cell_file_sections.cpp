@@ -341,43 +341,4 @@ void readStructure(const TomlTable& root, CellInput& in) {
   in.cell.symmetry = symmetryFromKeys(*symmetry, readSymmetryKeys(*symmetry));
 }
 
-void readKPoints(const TomlTable& root, CellInput& in) {
-  const bool ring = in.cell.symmetry.isRing();
-  const auto k = root.table("kpoints");
-  if (!k) {
-    if (!ring)
-      root.missing("kpoints",
-                   "a table [kpoints] with helical = N (the screw needs helical "
-                   "k-points)");
-    return;  // a ring: every angular quantum number, no helical k-points
-  }
-  k->allowOnly({"helical", "angular"});
-  if (k->has("helical")) {
-    const char* expected = "a number of helical k-points from 1 to 1000000";
-    const long n = k->integer("helical", expected);
-    if (n < 1 || n > 1000000) k->fail("helical", std::to_string(n), expected);
-    if (ring && n != 1)
-      k->fail("helical", fmt::format("{} for a closed ring (translation 0)", n),
-              "helical = 1 or no helical key: a ring has no helical wave number");
-    in.helicalKPoints = static_cast<int>(n);
-  } else if (!ring) {
-    k->missing("helical", "the number of helical k-points (an integer >= 1)");
-  }
-  if (k->has("angular")) {
-    const toml::value& v = k->at("angular");
-    const std::string expected =
-        "\"all\" or a number of sampled angular quantum numbers from 1 to 1000000000";
-    if (v.is_string()) {
-      if (v.as_string().str != "all") k->fail("angular", describe(v), expected);
-      in.angular.samples = 0;
-    } else if (v.is_integer()) {
-      if (v.as_integer() < 1 || v.as_integer() > 1000000000L)
-        k->fail("angular", describe(v), expected);
-      in.angular.samples = static_cast<int>(v.as_integer());
-    } else {
-      k->fail("angular", describe(v), expected);
-    }
-  }
-}
-
 }  // namespace mesochain::objective::detail

@@ -1,6 +1,6 @@
 #pragma once
 // Parts of the cell-file reader (cell_file.cpp): the structure ([geometry] or [builder], and
-// [symmetry]) and [kpoints].
+// [symmetry]).
 #include "input/cell_file.hpp"
 #include "common/toml_table.hpp"
 
@@ -8,7 +8,5 @@ namespace mesochain::objective::detail {
 
 // Fills in.cell (geometry and symmetry) from [geometry] + [symmetry] or [builder].
 void readStructure(const TomlTable& root, CellInput& in);
-// Fills in.helicalKPoints and in.angular; needs in.cell.symmetry.
-void readKPoints(const TomlTable& root, CellInput& in);
 
 }  // namespace mesochain::objective::detail

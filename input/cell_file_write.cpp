@@ -12,8 +12,7 @@
 #include "common/units.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
-#include "dftb/settings_tables.hpp"
-#include "input/cell_calculator.hpp"
+#include "dftb/band_table.hpp"
 #include "input/cell_file.hpp"
 
 namespace mesochain::objective {
@@ -30,7 +29,7 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   const ObjectiveCell& cell = in.cell;
   const Symmetry& s = cell.symmetry;
   if (cell.atomCount() == 0) throw InputError(path, "geometry", "no atoms", "at least one atom");
-  requireElectronicTemperature(in.electronicTemperature, path, "key electrons.temperature");
+  requireElectronicTemperature(in.band.electronicTemperature, path, "key electrons.temperature");
   AtomicOutputFile file(path);
   std::ofstream& out = file.stream();
   out << "# mesochain objective-cell input; keys and units: docs/cell-file.md\n";
@@ -45,7 +44,7 @@ void writeCellFile(const std::string& path, const CellInput& in) {
   out << fmt::format("translation = {}  # Å\ntwist = {}  # degrees\nrotation_order = {}\n\n",
                      real(s.translation() * units::kBohrInAngstrom), real(twist),
                      s.rotationOrder());
-  const dftb::BandSettings band = calculatorSettings(in).band;
+  const dftb::BandSettings& band = in.band;
   out << "[kpoints]\n" << tomlTableText(dftb::kpointsTableEntries(band, s.isRing()));
   out << "\n[electrons]\n" << tomlTableText(dftb::electronsTableEntries(band)) << "\n[parameters]\n";
   std::map<std::string, std::string> fromSet;

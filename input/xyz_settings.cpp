@@ -8,8 +8,7 @@
 #include "common/units.hpp"
 #include "dftb/dispersion_table.hpp"
 #include "dftb/scc_table.hpp"
-#include "dftb/settings_tables.hpp"
-#include "input/cell_calculator.hpp"
+#include "dftb/band_table.hpp"
 
 namespace mesochain::objective {
 
@@ -43,7 +42,7 @@ std::string xyzSettingsKeys(const CellInput& in) {
   auto add = [&out, &in](const std::string& key, const std::string& value) {
     out += " mesochain:" + key + "=" + token(value, key, in.source);
   };
-  const dftb::BandSettings band = calculatorSettings(in).band;
+  const dftb::BandSettings& band = in.band;
   for (const SettingEntry& e : dftb::kpointsTableEntries(band, in.cell.symmetry.isRing()))
     add("kpoints." + e.key, xyzValue(e.value));
   for (const SettingEntry& e : dftb::electronsTableEntries(band)) add("electrons." + e.key, xyzValue(e.value));

@@ -144,8 +144,8 @@ void readAngularMomenta(const Node& h, CellInput& in) {
 void readKPoints(const Node& h, GenType type, CellInput& in) {
   const Node* k = h.child("KPointsAndWeights");
   const objective::Symmetry& sym = in.cell.symmetry;
-  in.helicalKPoints = 1;
-  in.angular.samples = 0;
+  in.band.helicalKPoints = 1;
+  in.band.angular.samples = 0;
   if (type == GenType::Cluster || sym.isRing()) {
     if (k) k->fail("k-points for a molecule or closed ring", "no KPointsAndWeights (.gen type C)");
     return;
@@ -164,7 +164,7 @@ void readKPoints(const Node& h, GenType type, CellInput& in) {
         m.fail(fmt::format("the shift {}", v[1]),
                "the shift 0.5: DFTB+ puts k1 = (i + s)/(2N), which is mesochain's midpoint grid of 2N "
                "helical points only for s = 1/2");
-      in.helicalKPoints = 2 * static_cast<int>(std::lround(v[0]));
+      in.band.helicalKPoints = 2 * static_cast<int>(std::lround(v[0]));
       return;
     }
     if (m.is("HelicalSampled")) {
@@ -185,8 +185,8 @@ void readKPoints(const Node& h, GenType type, CellInput& in) {
       if (n2 < cn && shift != l / 2)
         m.fail(fmt::format("the angular shift {}", v[3]),
                fmt::format("a shift of {}/{} (mod {}/{}): mesochain samples mu = m {} + {}", l / 2, cn, l, cn, l, l / 2));
-      in.helicalKPoints = 2 * static_cast<int>(std::lround(v[0]));
-      in.angular.samples = n2 < cn ? n2 : 0;
+      in.band.helicalKPoints = 2 * static_cast<int>(std::lround(v[0]));
+      in.band.angular.samples = n2 < cn ? n2 : 0;
       return;
     }
     m.fail("the k-point scheme '" + m.name + "'", expected);
@@ -215,7 +215,7 @@ void readKPoints(const Node& h, GenType type, CellInput& in) {
     m.fail(fmt::format("the shift {} along c with N = {}", v[11], ni),
            fmt::format("{} for N {}: mesochain's midpoint grid of N points along the period", want,
                        ni % 2 == 0 ? "even" : "odd"));
-  in.helicalKPoints = ni;
+  in.band.helicalKPoints = ni;
 }
 
 void readFilling(const Node& h, CellInput& in) {
@@ -227,9 +227,9 @@ void readFilling(const Node& h, CellInput& in) {
   allowOnly(m, {"Temperature"});
   const Node* t = m.child("Temperature");
   if (!t) m.fail("no Temperature", expected);
-  in.electronicTemperature = withUnit(*t, UnitKind::Energy, "au", "a temperature (Hartree by default, [Kelvin], [eV], ...)");
-  if (!electronicTemperatureInRange(in.electronicTemperature))
-    t->fail(describeElectronicTemperature(in.electronicTemperature), electronicTemperatureRange());
+  in.band.electronicTemperature = withUnit(*t, UnitKind::Energy, "au", "a temperature (Hartree by default, [Kelvin], [eV], ...)");
+  if (!electronicTemperatureInRange(in.band.electronicTemperature))
+    t->fail(describeElectronicTemperature(in.band.electronicTemperature), electronicTemperatureRange());
 }
 
 void readDispersion(const Node& h, CellInput& in) {

@@ -207,10 +207,11 @@ void bindCells(py::module_& m) {
                         "parameter tables, dispersion, SCC, task). Atomic units.")
       .def_readonly("source", &CellInput::source)
       .def_readonly("cell", &CellInput::cell)
-      .def_readonly("helical_kpoints", &CellInput::helicalKPoints)
-      .def_property_readonly("angular_samples", [](const CellInput& in) { return in.angular.samples; },
+      .def_property_readonly("helical_kpoints", [](const CellInput& in) { return in.band.helicalKPoints; })
+      .def_property_readonly("angular_samples", [](const CellInput& in) { return in.band.angular.samples; },
                              "0 = every angular quantum number, M > 0 = M samples")
-      .def_readonly("electronic_temperature", &CellInput::electronicTemperature, "k_B T (Hartree)")
+      .def_property_readonly("electronic_temperature", [](const CellInput& in) { return in.band.electronicTemperature; },
+                             "k_B T (Hartree)")
       .def_readonly("parameter_set", &CellInput::parameterSet)
       .def_readonly("parameter_files", &CellInput::parameterFiles)
       .def_readonly("max_angular_momentum", &CellInput::maxAngularMomentum)

@@ -44,9 +44,9 @@ void expectSameInput(const CellInput& a, const CellInput& b) {
   EXPECT_NEAR(a.cell.symmetry.translation(), b.cell.symmetry.translation(), 1e-12);
   EXPECT_NEAR(a.cell.symmetry.twist(), b.cell.symmetry.twist(), 1e-12);
   EXPECT_EQ(a.cell.symmetry.rotationOrder(), b.cell.symmetry.rotationOrder());
-  EXPECT_EQ(a.helicalKPoints, b.helicalKPoints);
-  EXPECT_EQ(a.angular.samples, b.angular.samples);
-  EXPECT_NEAR(a.electronicTemperature, b.electronicTemperature, 1e-15);
+  EXPECT_EQ(a.band.helicalKPoints, b.band.helicalKPoints);
+  EXPECT_EQ(a.band.angular.samples, b.band.angular.samples);
+  EXPECT_NEAR(a.band.electronicTemperature, b.band.electronicTemperature, 1e-15);
   EXPECT_EQ(a.parameterFiles, b.parameterFiles);
   EXPECT_EQ(a.parameterSet, b.parameterSet);
   EXPECT_EQ(a.maxAngularMomentum, b.maxAngularMomentum);
@@ -104,9 +104,9 @@ TEST(CellFile, ReadsTheExamples) {
   EXPECT_EQ(in.cell.atomCount(), 2);
   EXPECT_LT((in.cell.positions - ref.positions).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_EQ(in.cell.symmetry.rotationOrder(), 5);
-  EXPECT_EQ(in.helicalKPoints, 64);
-  EXPECT_EQ(in.angular.samples, 0);
-  EXPECT_NEAR(in.electronicTemperature, 300 * units::kBoltzmannHartreePerKelvin, 1e-15);
+  EXPECT_EQ(in.band.helicalKPoints, 64);
+  EXPECT_EQ(in.band.angular.samples, 0);
+  EXPECT_NEAR(in.band.electronicTemperature, 300 * units::kBoltzmannHartreePerKelvin, 1e-15);
   EXPECT_EQ(in.parameterSet, "pbc-0-3");
   ASSERT_EQ(in.parameterFiles.size(), 1u);
   EXPECT_TRUE(fs::equivalent(in.parameterFiles.at("C-C"), kSource + "/params/pbc-0-3/C-C.skf"));

@@ -21,8 +21,8 @@ CellInput tubeInput(const ObjectiveCell& cell, int helical) {
   CellInput in;
   in.source = "<test>";
   in.cell = cell;
-  in.helicalKPoints = helical;
-  in.electronicTemperature = 3000.0 * units::kBoltzmannHartreePerKelvin;  // a real entropy term
+  in.band.helicalKPoints = helical;
+  in.band.electronicTemperature = 3000.0 * units::kBoltzmannHartreePerKelvin;  // a real entropy term
   in.parameterSet = "pbc-0-3";
   in.parameterFiles = parameterSetFiles("pbc-0-3", cell.speciesNames, "<test>", "parameters.set");
   return in;
@@ -72,11 +72,11 @@ TEST(CellReduction, BadToleranceIsRefusedNamingTheOption) {
 
 TEST(CellReduction, SampledAngularNumbersAreRefused) {
   CellInput in = tubeInput(buildNanotubeSector(10, 10, kBond, 5), 4);
-  in.angular.samples = 3;
+  in.band.angular.samples = 3;
   const RotationReduction r = findExtraRotation(in.cell, kDefaultReductionToleranceBohr);
   mesochain::testing::expectInputError([&] { reducedCellInput(in, r); }, {"kpoints.angular"});
-  in.angular.samples = 5;  // every mu of N_a = 5: exact
-  EXPECT_EQ(reducedCellInput(in, r).angular.samples, 0);
+  in.band.angular.samples = 5;  // every mu of N_a = 5: exact
+  EXPECT_EQ(reducedCellInput(in, r).band.angular.samples, 0);
 }
 
 TEST(CellReduction, ReducedCellGivesTheSameEnergyAndForces) {

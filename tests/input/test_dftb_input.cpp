@@ -63,12 +63,12 @@ TEST(DftbInput, DefaultsAndTaskAreDftbPlus) {
   EXPECT_EQ(in.task.type, "energy");
   EXPECT_FALSE(in.scc.enabled);
   EXPECT_EQ(in.dispersion.model(), "none");
-  EXPECT_EQ(in.helicalKPoints, 1);
+  EXPECT_EQ(in.band.helicalKPoints, 1);
   EXPECT_EQ(in.maxAngularMomentum.at("C"), 1);
   EXPECT_EQ(in.maxAngularMomentum.at("H"), 0);
   EXPECT_EQ(in.parameterFiles.size(), 4u);
   // Temperature [K] with DFTB+'s k_B (3.16681534524639e-6 Ha/K, not CODATA's).
-  EXPECT_DOUBLE_EQ(in.electronicTemperature, 300 * 3.16681534524639e-6);
+  EXPECT_DOUBLE_EQ(in.band.electronicTemperature, 300 * 3.16681534524639e-6);
   // SCC = Yes alone: DFTB+'s SCCTolerance 1e-5 and 100 iterations, charges only.
   const auto scc = read("scc-defaults", methane("SCC = Yes"));
   EXPECT_TRUE(scc.scc.enabled);
@@ -92,8 +92,8 @@ TEST(DftbInput, DefaultsAndTaskAreDftbPlus) {
 
 TEST(DftbInput, TemperatureUnitsAreDftbPlusUnits) {
   // No unit: Hartree, as in DFTB+.
-  EXPECT_EQ(read("t-au", methane("", "", "Filling = Fermi { Temperature = 0.001 }")).electronicTemperature, 0.001);
-  EXPECT_DOUBLE_EQ(read("t-ev", methane("", "", "Filling = Fermi { Temperature [eV] = 0.1 }")).electronicTemperature,
+  EXPECT_EQ(read("t-au", methane("", "", "Filling = Fermi { Temperature = 0.001 }")).band.electronicTemperature, 0.001);
+  EXPECT_DOUBLE_EQ(read("t-ev", methane("", "", "Filling = Fermi { Temperature [eV] = 0.1 }")).band.electronicTemperature,
                    0.1 / 27.2113845);
   const std::string m = errorOf([] { read("t-bad", methane("", "", "Filling = Fermi { Temperature [Angstrom] = 300 }")); });
   EXPECT_NE(m.find("line 6"), std::string::npos) << m;
@@ -107,17 +107,17 @@ TEST(DftbInput, TemperatureUnitsAreDftbPlusUnits) {
 
 TEST(DftbInput, HelicalKPointsMapOntoTheMidpointGrid) {
   // DFTB+: k1 = (i + 1/2)/(2N), i < N, all k2: half of the 2N-point midpoint grid.
-  EXPECT_EQ(helical("hu40", "HelicalUniform { 40 0.5 }").helicalKPoints, 80);
-  EXPECT_EQ(helical("hu40", "HelicalUniform { 40 0.5 }").angular.samples, 0);
+  EXPECT_EQ(helical("hu40", "HelicalUniform { 40 0.5 }").band.helicalKPoints, 80);
+  EXPECT_EQ(helical("hu40", "HelicalUniform { 40 0.5 }").band.angular.samples, 0);
   const std::string m = errorOf([] { helical("hu0", "HelicalUniform { 40 0.0 }"); });
   EXPECT_NE(m.find("shift 0"), std::string::npos) << m;
   EXPECT_NE(m.find("line 6"), std::string::npos) << m;
   // C_5: N2 = 5 is every mu; N2 = 1 samples mu = floor(5/2) = 2, i.e. k2 shift 2/5.
   const auto all = helical("hs-all", "HelicalSampled { 20 5 0.5 0.0 }");
-  EXPECT_EQ(all.helicalKPoints, 40);
-  EXPECT_EQ(all.angular.samples, 0);
+  EXPECT_EQ(all.band.helicalKPoints, 40);
+  EXPECT_EQ(all.band.angular.samples, 0);
   const auto one = helical("hs-one", "HelicalSampled { 20 1 0.5 0.4 }");
-  EXPECT_EQ(one.angular.samples, 1);
+  EXPECT_EQ(one.band.angular.samples, 1);
   EXPECT_NE(errorOf([] { helical("hs-shift", "HelicalSampled { 20 1 0.5 0.0 }"); }).find("angular shift"),
             std::string::npos);
   EXPECT_NE(errorOf([] { helical("hs-div", "HelicalSampled { 20 2 0.5 0.0 }"); }).find("divisor"), std::string::npos);
@@ -130,8 +130,8 @@ TEST(DftbInput, SupercellFoldingNeedsTheMidpointShift) {
     return cnt55Input("folding", "cnt55_translational",
                       "SupercellFolding {\n    1 0 0\n    0 1 0\n    0 0 " + folding + "\n  }");
   };
-  EXPECT_EQ(input("16\n 0.0 0.0 0.5").helicalKPoints, 16);
-  EXPECT_EQ(input("5\n 0.0 0.0 0.0").helicalKPoints, 5);  // odd N: the midpoint grid holds k = 0
+  EXPECT_EQ(input("16\n 0.0 0.0 0.5").band.helicalKPoints, 16);
+  EXPECT_EQ(input("5\n 0.0 0.0 0.0").band.helicalKPoints, 5);  // odd N: the midpoint grid holds k = 0
   std::string m = errorOf([&] { input("16\n 0.0 0.0 0.0"); });
   EXPECT_NE(m.find("0.5 for N even"), std::string::npos) << m;
   m = errorOf([&] { input("16\n 0.5 0.0 0.5"); });

@@ -62,7 +62,7 @@ void expectConvertedFileAgrees(const objective::CellInput& in, const dftb::Resul
   const std::string toml = mesochain::testing::hsdTempDir("converted") + "/" + name + ".toml";
   objective::writeCellFile(toml, in);
   const objective::CellInput back = objective::readCellFile(toml);
-  EXPECT_EQ(back.helicalKPoints, in.helicalKPoints);
+  EXPECT_EQ(back.band.helicalKPoints, in.band.helicalKPoints);
   EXPECT_EQ(back.task.type, in.task.type);
   const dftb::Result rb = objective::makeCalculator(back).evaluate(back.cell, {true, false});
   EXPECT_NEAR(rb.freeEnergy, r.freeEnergy, 1e-11) << name;
@@ -74,7 +74,7 @@ void compareNonScc(const std::string& name) {
   const json tol = load(std::string(MESOCHAIN_TEST_DATA) + "/dftbplus/tolerances.json");
   const objective::CellInput in = input::hsd::readDftbInput(mesochain::testing::copiedDftbPlusCase(name));
   expectDftbPlusGeometry(in, ref["geometry"]);
-  EXPECT_NEAR(in.electronicTemperature, ref["kT_Hartree"].get<double>(), 1e-17);
+  EXPECT_NEAR(in.band.electronicTemperature, ref["kT_Hartree"].get<double>(), 1e-17);
   EXPECT_EQ(in.task.type, "forces");  // Analysis { PrintForces = Yes }, no driver
   EXPECT_FALSE(in.scc.enabled);
   const dftb::Result r = objective::makeCalculator(in).evaluate(in.cell, {true, false});
@@ -120,7 +120,7 @@ TEST(HsdDftbPlus, Cnt55SupercellFolding) { compareNonScc("cnt55_translational");
 TEST(HsdDftbPlus, Cnt55SupercellFoldingIdeal) { compareNonScc("cnt55_translational_ideal"); }
 TEST(HsdDftbPlus, Cnt55HelicalUniform) {
   // HelicalUniform { 40 0.5 } is mesochain's helical = 80.
-  EXPECT_EQ(input::hsd::readDftbInput(mesochain::testing::copiedDftbPlusCase("cnt55_helical")).helicalKPoints, 80);
+  EXPECT_EQ(input::hsd::readDftbInput(mesochain::testing::copiedDftbPlusCase("cnt55_helical")).band.helicalKPoints, 80);
   compareNonScc("cnt55_helical");
 }
 TEST(HsdDftbPlus, Cnt55HelicalUniformIdeal) { compareNonScc("cnt55_helical_ideal"); }
@@ -142,7 +142,7 @@ TEST(HsdDftbPlus, SccPolarChainInVacuumCells) {
     const objective::CellInput in = input::hsd::readDftbInput(mesochain::testing::copiedDftbPlusCase(name));
     EXPECT_TRUE(in.scc.enabled) << name;
     EXPECT_EQ(in.scc.ewaldTolerance, 1e-13) << name;  // EwaldTolerance = 1.0e-13
-    EXPECT_EQ(in.helicalKPoints, ref["kpoints"]["n"].get<int>()) << name;
+    EXPECT_EQ(in.band.helicalKPoints, ref["kpoints"]["n"].get<int>()) << name;
     EXPECT_NEAR(in.cell.symmetry.translation(), ref["geometry"]["translation_bohr"].get<double>(), 1e-12);
     const dftb::Result r = objective::makeCalculator(in).evaluate(in.cell, {false, false});
     EXPECT_EQ(r.extras.at("scc_converged"), 1.0) << name;

@@ -89,9 +89,9 @@ TEST(CellDocument, InMemoryDocumentReadsLikeTheFileAndNamesKeysWithoutLines) {
   doc["electrons"] = toml::table{{"temperature", 300}};
   doc["parameters"] = toml::table{{"set", "pbc-0-3"}};
   const CellInput mem = readCellDocument(doc, "<dict>");
-  EXPECT_EQ(mem.helicalKPoints, file.helicalKPoints);
+  EXPECT_EQ(mem.band.helicalKPoints, file.band.helicalKPoints);
   EXPECT_EQ(mem.parameterFiles, file.parameterFiles);
-  EXPECT_EQ(mem.electronicTemperature, file.electronicTemperature);
+  EXPECT_EQ(mem.band.electronicTemperature, file.band.electronicTemperature);
   EXPECT_EQ(mem.cell.positions, file.cell.positions);
   EXPECT_EQ(mem.cell.symmetry.translation(), file.cell.symmetry.translation());
 
