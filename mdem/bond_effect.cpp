@@ -8,7 +8,8 @@ namespace mesochain::mdem {
 
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "bonds", 100, "parallel bonds between elements (parallel_bond.hpp)", true, nullptr,
-    [](EffectBuild& b) -> EffectPtr { return std::make_unique<BondEffect>(b.scene.bonds, b.scene.bodies.size()); }})
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<BondEffect>(b.scene.bonds, b.scene.bodies.size()); },
+    EffectTable{}, false})
 
 BondEffect::BondEffect(std::vector<Bond> bonds, int elementCount)
     : bonds_(std::move(bonds)), results_(bonds_.size()), start_(elementCount + 1, 0) {

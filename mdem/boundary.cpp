@@ -13,7 +13,8 @@ namespace mesochain::mdem {
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "loads", 300, "forces and moments applied to elements ([[loads]])", false,
     [](const Scene& s) { return !s.boundary.loads.empty(); },
-    [](EffectBuild& b) -> EffectPtr { return std::make_unique<LoadEffect>(b.scene.boundary.loads, b.scene.bodies); }})
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<LoadEffect>(b.scene.boundary.loads, b.scene.bodies); },
+    EffectTable{}, false})
 
 namespace {
 // 0 before the start (t < 0), then linear over `ramp`, then 1.

@@ -36,6 +36,27 @@ std::vector<const EffectRegistration*> registeredEffects() { return registry().o
 
 const EffectRegistration* findEffect(std::string_view name) { return registry().find(name); }
 
+void readEffectTables(const TomlTable& root, Scene& scene, const std::vector<std::string>& stageEffects) {
+  for (const EffectRegistration* r : registeredEffects()) {
+    const EffectTable& t = r->table;
+    if (t.name.empty()) continue;
+    const bool named = std::find(scene.effects.begin(), scene.effects.end(), r->name) != scene.effects.end() ||
+                       std::find(stageEffects.begin(), stageEffects.end(), r->name) != stageEffects.end();
+    if (root.has(t.name) && !named)
+      root.fail(t.name, "parameters for an effect that is not listed", "\"" + r->name + "\" in effects");
+    if (!root.has(t.name) && named && t.required)
+      root.fail(t.name, "nothing", "a [" + t.name + "] table (docs/scene-file.md, docs/mdem-contacts.md)");
+    if (root.has(t.name)) t.read(root.requireTable(t.name), scene);
+  }
+}
+
+std::string stageableEffectNames() {
+  std::string out;
+  for (const EffectRegistration* r : registeredEffects())
+    if (r->stageable) out += (out.empty() ? "\"" : " or \"") + r->name + "\"";
+  return out;
+}
+
 std::vector<EffectPtr> buildEffects(const Scene& scene) {
   std::string known;
   for (const EffectRegistration* r : registeredEffects())

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/registry.hpp"
+#include "common/toml_table.hpp"
 #include "mdem/effect.hpp"
 
 namespace mesochain::mdem {
@@ -42,6 +43,14 @@ class EffectBuild {
   std::map<std::string, std::shared_ptr<void>> shared_;
 };
 
+// An effect's own table of the scene file ([vdw_contact], [local_damping], ...), read by the
+// effect's file through common/toml_table (strict: unknown keys, types, ranges name the key).
+struct EffectTable {
+  std::string name;       // the table's name ("" for an effect without one)
+  bool required = false;  // naming the effect without its table is an error
+  std::function<void(const TomlTable&, Scene&)> read;
+};
+
 struct EffectRegistration {
   std::string name;     // as listed in a scene's `effects`
   int order = 100;      // see above
@@ -51,6 +60,10 @@ struct EffectRegistration {
   bool listable = true;
   std::function<bool(const Scene&)> implicit;
   std::function<EffectPtr(EffectBuild&)> make;
+  EffectTable table;  // its scene table, if it has one
+  // A stage may add it for that stage only ([[stages]] add_effects): no state that evolves over
+  // the run (numerical damping); bonds and contacts are named for the whole run.
+  bool stageable = false;
 };
 
 // Registers an effect; returns true (for the static initialiser). Two effects of one name are a
@@ -59,6 +72,13 @@ bool registerEffect(EffectRegistration registration);
 // Every registered effect, by order (then name).
 std::vector<const EffectRegistration*> registeredEffects();
 const EffectRegistration* findEffect(std::string_view name);
+
+// Reads the table of every registered effect that has one: refused when present for an effect
+// that neither `effects` nor a stage's add_effects names (`stageEffects`), or absent for a named
+// effect whose table is required.
+void readEffectTables(const TomlTable& root, Scene& scene, const std::vector<std::string>& stageEffects);
+// The names of the effects a stage may add, quoted, for messages.
+std::string stageableEffectNames();
 
 // Builds the effects `scene` wants, in order. Throws InputError (key effects) for a name that
 // is not a registered, listable effect, or a name given twice.

@@ -12,6 +12,7 @@
 #include "mdem/checkpoint.hpp"
 #include "mdem/compression.hpp"
 #include "mdem/contacts/contact_file.hpp"
+#include "mdem/effect_registry.hpp"
 #include "mdem/tensile.hpp"
 #include "common/toml_table.hpp"
 #include "mdem/units.hpp"
@@ -370,9 +371,10 @@ void readStages(const TomlTable& root, Scene& s) {
       if (std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end())
         t.fail("add_effects", "\"" + e + "\", already in effects", "effects named for this stage only");
       // Effects with evolving state (bonds, contacts: neighbour lists, dissipated work) are
-      // named for the whole run; a stage adds numerical damping.
-      if (e != "local_damping" && e != "viscous_damping")
-        t.fail("add_effects", "\"" + e + "\"", "\"local_damping\" or \"viscous_damping\" (other effects are named in effects, for every stage)");
+      // named for the whole run; a stage adds numerical damping (EffectRegistration::stageable).
+      const EffectRegistration* r = findEffect(e);
+      if (!r || !r->stageable)
+        t.fail("add_effects", "\"" + e + "\"", stageableEffectNames() + " (other effects are named in effects, for every stage)");
     }
     st.energiesCsv = t.stringOr("energies_csv", st.name + "-energies.csv");
     st.energiesEvery = t.integerOr("energies_every", 100);
@@ -438,31 +440,12 @@ Scene loadScene(const std::string& path) {
   readBonds(root, s);
   readNetworkTable(root, s);
   readBoundary(root, s);
-  if (root.has("local_damping")) {
-    const TomlTable t = root.requireTable("local_damping");
-    t.allowOnly({"alpha"});
-    s.localDampingAlpha = t.number("alpha");
-    if (s.localDampingAlpha < 0.0 || s.localDampingAlpha >= 1.0)
-      t.fail("alpha", std::to_string(s.localDampingAlpha), "a number in [0, 1)");
-  }
-  if (root.has("viscous_damping")) {
-    const TomlTable t = root.requireTable("viscous_damping");
-    t.allowOnly({"rate_per_ns"});
-    s.viscousRate = t.positive("rate_per_ns");
-  }
   std::vector<std::string> stageEffects;  // named by a stage only
   if (root.has("stages"))
     for (const TomlTable& t : root.tables("stages"))
       if (t.has("add_effects"))
         for (const std::string& e : t.strings("add_effects")) stageEffects.push_back(e);
-  for (const char* e : {"local_damping", "viscous_damping"}) {
-    const bool named = std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end() ||
-                       std::find(stageEffects.begin(), stageEffects.end(), e) != stageEffects.end();
-    if (root.has(e) && !named)
-      root.fail(e, "parameters for an effect that is not listed", "\"" + std::string(e) + "\" in effects");
-    if (!root.has(e) && named && std::string(e) == "viscous_damping")
-      root.fail(e, "nothing", "a [viscous_damping] table with rate_per_ns");
-  }
+  readEffectTables(root, s, stageEffects);  // each effect reads its own table (mdem/effect_registry.hpp)
   readContactTables(root, s);
   readRunAndOutput(root, s);
   if (s.bodies.size() == 0)

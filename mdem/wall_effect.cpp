@@ -14,7 +14,8 @@ namespace mesochain::mdem {
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "walls", 300, "rigid plates normal to z of a compression stage ([stages.compression])", false,
     [](const Scene& s) { return s.compression.enabled; },
-    [](EffectBuild& b) -> EffectPtr { return std::make_unique<WallEffect>(b.scene); }})
+    [](EffectBuild& b) -> EffectPtr { return std::make_unique<WallEffect>(b.scene); },
+    EffectTable{}, false})
 
 WallEffect::WallEffect(const Scene& scene) : spec_(scene.compression), rule_(gaussLegendre(scene.compression.quadraturePoints)) {
   for (const ElementType& t : scene.elementTypes) radius_.push_back(t.contactRadius()), halfLength_.push_back(0.5 * t.length);

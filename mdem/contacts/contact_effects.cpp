@@ -22,14 +22,16 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
       bool owner;
       auto nb = sharedNeighbourhood(b, &owner);
       return std::make_unique<VdwContactEffect>(b.scene, std::move(nb), owner);
-    }})
+    },
+    {"vdw_contact", true, readVdwContactTable}})
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "contact_damping", 400, "dashpots in parallel with the contacts ([contact_damping])", true, nullptr,
     [](EffectBuild& b) -> EffectPtr {
       bool owner;
       auto nb = sharedNeighbourhood(b, &owner);
       return std::make_unique<ContactDampingEffect>(b.scene, std::move(nb), owner);
-    }})
+    },
+    {"contact_damping", true, readContactDampingTable}})
 
 namespace {
 

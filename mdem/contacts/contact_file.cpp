@@ -109,50 +109,44 @@ void readNetworkTable(const TomlTable& root, Scene& s) {
   s.filmSize = n.size;
 }
 
+void readVdwContactTable(const TomlTable& t, Scene& s) {
+  t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
+               "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg",
+               "layer_spacing_nm", "edge_width_nm"});
+  VdwContactSpec& v = s.contacts.vdw;
+  const std::string form = t.stringOr("form", "anisotropic");
+  if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
+  v.anisotropic = form == "anisotropic";
+  v.lj.epsilon = t.positive("epsilon_meV") * 1e-3 * units::kElectronvolt;
+  v.lj.sigma = t.positive("sigma_nm");
+  v.lj.surfaceDensity = t.positive("surface_density_per_nm2");
+  v.switchGap = t.numberOr("switch_gap_nm", v.switchGap);
+  v.cutoffGap = t.numberOr("cutoff_gap_nm", v.cutoffGap);
+  v.quadraturePoints = static_cast<int>(t.integerOr("quadrature_points", v.quadraturePoints));
+  if (t.has("quadrature_tolerance")) {
+    if (t.has("quadrature_points"))
+      t.fail("quadrature_tolerance", "both quadrature_points and quadrature_tolerance",
+             "one of them (the tolerance chooses the number of points)");
+    v.quadratureTolerance = t.number("quadrature_tolerance");
+    if (!(v.quadratureTolerance > 0.0))
+      t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
+  }
+  v.alignedWindowDegrees = t.numberOr("aligned_window_deg", v.alignedWindowDegrees);
+  v.layerSpacing = t.numberOr("layer_spacing_nm", v.layerSpacing);
+  v.edgeWidth = t.numberOr("edge_width_nm", v.edgeWidth);
+}
+
+void readContactDampingTable(const TomlTable& t, Scene& s) {
+  t.allowOnly({"translational_pN_ns_per_nm2", "rotational_pN_ns", "full_gap_nm", "cutoff_gap_nm"});
+  ContactDampingSpec& d = s.contacts.damping;
+  d.translational = t.nonNegativeOr("translational_pN_ns_per_nm2", -1.0);
+  if (d.translational < 0.0) t.fail("translational_pN_ns_per_nm2", "nothing", "a value >= 0");
+  d.rotational = t.nonNegativeOr("rotational_pN_ns", 0.0);
+  d.fullGap = t.numberOr("full_gap_nm", d.fullGap);
+  d.cutoffGap = t.numberOr("cutoff_gap_nm", d.cutoffGap);
+}
+
 void readContactTables(const TomlTable& root, Scene& s) {
-  for (const char* e : {"vdw_contact", "contact_damping"}) {
-    if (root.has(e) && !listed(s, e))
-      root.fail(e, "parameters for an effect that is not listed", "\"" + std::string(e) + "\" in effects");
-    if (!root.has(e) && listed(s, e))
-      root.fail(e, "nothing", fmt::format("a [{}] table (docs/mdem-contacts.md)", e));
-  }
-  if (root.has("vdw_contact")) {
-    const TomlTable t = root.requireTable("vdw_contact");
-    t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
-                 "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg",
-                 "layer_spacing_nm", "edge_width_nm"});
-    VdwContactSpec& v = s.contacts.vdw;
-    const std::string form = t.stringOr("form", "anisotropic");
-    if (form != "anisotropic" && form != "isotropic") t.fail("form", "\"" + form + "\"", "\"anisotropic\" or \"isotropic\"");
-    v.anisotropic = form == "anisotropic";
-    v.lj.epsilon = t.positive("epsilon_meV") * 1e-3 * units::kElectronvolt;
-    v.lj.sigma = t.positive("sigma_nm");
-    v.lj.surfaceDensity = t.positive("surface_density_per_nm2");
-    v.switchGap = t.numberOr("switch_gap_nm", v.switchGap);
-    v.cutoffGap = t.numberOr("cutoff_gap_nm", v.cutoffGap);
-    v.quadraturePoints = static_cast<int>(t.integerOr("quadrature_points", v.quadraturePoints));
-    if (t.has("quadrature_tolerance")) {
-      if (t.has("quadrature_points"))
-        t.fail("quadrature_tolerance", "both quadrature_points and quadrature_tolerance",
-               "one of them (the tolerance chooses the number of points)");
-      v.quadratureTolerance = t.number("quadrature_tolerance");
-      if (!(v.quadratureTolerance > 0.0))
-        t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
-    }
-    v.alignedWindowDegrees = t.numberOr("aligned_window_deg", v.alignedWindowDegrees);
-    v.layerSpacing = t.numberOr("layer_spacing_nm", v.layerSpacing);
-    v.edgeWidth = t.numberOr("edge_width_nm", v.edgeWidth);
-  }
-  if (root.has("contact_damping")) {
-    const TomlTable t = root.requireTable("contact_damping");
-    t.allowOnly({"translational_pN_ns_per_nm2", "rotational_pN_ns", "full_gap_nm", "cutoff_gap_nm"});
-    ContactDampingSpec& d = s.contacts.damping;
-    d.translational = t.nonNegativeOr("translational_pN_ns_per_nm2", -1.0);
-    if (d.translational < 0.0) t.fail("translational_pN_ns_per_nm2", "nothing", "a value >= 0");
-    d.rotational = t.nonNegativeOr("rotational_pN_ns", 0.0);
-    d.fullGap = t.numberOr("full_gap_nm", d.fullGap);
-    d.cutoffGap = t.numberOr("cutoff_gap_nm", d.cutoffGap);
-  }
   if (root.has("contacts")) {
     const TomlTable t = root.requireTable("contacts");
     t.allowOnly({"exclude_within_elements", "skin_nm"});

@@ -6,8 +6,13 @@
 
 namespace mesochain::mdem {
 
-// Reads the tables present; checks ranges; fails when an effect's table is present but the
-// effect is not listed (or vdw_contact is listed without its table).
+// The effects' own tables, registered with them (mdem/contacts/contact_effects.cpp; read by
+// readEffectTables, mdem/effect_registry.hpp): [vdw_contact] and [contact_damping].
+void readVdwContactTable(const TomlTable& t, Scene& s);
+void readContactDampingTable(const TomlTable& t, Scene& s);
+
+// [contacts] (neighbour search) and [periodic], then the range checks of every contact setting
+// (after the effects' tables are read).
 void readContactTables(const TomlTable& root, Scene& s);
 
 // [network]: a random network of tubes (method = "random", network_generator.hpp) or a deposited

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
+#include "mdem/effect_registry.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
@@ -158,6 +159,29 @@ TEST_F(MdemSceneFile, OtherBadInput) {
   expectError(replace(kScene, "format = 1", "format = 2"), {"key format"});
   expectError(replace(kScene, "bond_type = \"b\"", "bond_type = \"c\""), {"bond_type", "\"c\""});
   expectError(replace(kScene, "steps = 50", "steps = 50.5"), {"key run.steps", "integer"});
+}
+
+// Each effect reads its own table (mdem/effect_registry.hpp): for every registered effect that
+// has one, the table of an effect the scene does not name is refused, naming the table; a
+// required table missing for a named effect is refused; an unknown key in it is named.
+TEST_F(MdemSceneFile, EveryEffectTableIsReadByItsEffect) {
+  const std::string bondsOnly = replace(kScene, "\"bonds\", \"local_damping\"]", "\"bonds\"]");
+  int tables = 0;
+  for (const EffectRegistration* r : registeredEffects()) {
+    if (r->table.name.empty()) continue;
+    ++tables;
+    ASSERT_TRUE(r->table.read) << r->name;
+    expectError(bondsOnly + "[" + r->table.name + "]\n", {("key " + r->table.name).c_str(), "not listed"});
+    if (r->table.required)
+      expectError(replace(bondsOnly, "\"bonds\"]", "\"bonds\", \"" + r->name + "\"]"),
+                  {("key " + r->table.name).c_str()});
+  }
+  EXPECT_GE(tables, 4);  // local_damping, viscous_damping, vdw_contact, contact_damping
+  expectError(std::string(kScene) + "[local_damping]\nalpha = 0.3\nbeta = 1\n", {"local_damping.beta"});
+  expectError(std::string(kScene) + "[local_damping]\nalpha = 1.5\n", {"local_damping.alpha", "[0, 1)"});
+  // Read when named: the value reaches the scene.
+  const Scene s = loadScene(write("scene.toml", std::string(kScene) + "[local_damping]\nalpha = 0.3\n"));
+  EXPECT_EQ(s.localDampingAlpha, 0.3);
 }
 
 }  // namespace
