@@ -1,8 +1,8 @@
 #pragma once
 // Strict access to one table of a TOML input (toml11 v3): every error is an InputError naming
 // the file, the dotted key and its line, what was found and what was expected. The one table
-// reader of every TOML format (cell, scan, skgen, mdem scene and model, beam constants, plate);
-// the files themselves are read by common/toml_file.hpp.
+// reader of every TOML format (cell, scan, chain, skgen, mdem scene and model, beam constants,
+// plate); the files themselves are read by common/toml_file.hpp.
 #include <optional>
 #include <string>
 #include <utility>
