@@ -69,6 +69,47 @@ std::string lineSuffix(const toml::value& v) {
   return lineOf(v) > 0 ? " (" + tomlWhere(v) + ")" : std::string();
 }
 
+namespace {
+
+// Typed views of one value: nullopt when it has another type.
+std::optional<long> asInteger(const toml::value& v) {
+  return v.is_integer() ? std::optional<long>(static_cast<long>(v.as_integer())) : std::nullopt;
+}
+std::optional<std::string> asString(const toml::value& v) {
+  return v.is_string() ? std::optional<std::string>(v.as_string().str) : std::nullopt;
+}
+std::optional<bool> asBoolean(const toml::value& v) {
+  return v.is_boolean() ? std::optional<bool>(v.as_boolean()) : std::nullopt;
+}
+
+// The value of a required key as `get` reads it; missing key or another type: the InputError
+// naming what was found and `expected`.
+template <class Get>
+auto required(const TomlTable& t, const std::string& key, const std::string& expected, Get get) {
+  if (!t.has(key)) t.missing(key, expected);
+  const toml::value& v = t.at(key);
+  const auto x = get(v);
+  if (!x) t.fail(key, describe(v), expected);
+  return *x;
+}
+
+// The same for every element of an array; a wrong element is named as "an array holding ...".
+template <class Get>
+auto requiredArray(const TomlTable& t, const std::string& key, const std::string& expected, Get get) {
+  if (!t.has(key)) t.missing(key, expected);
+  const toml::value& v = t.at(key);
+  if (!v.is_array()) t.fail(key, describe(v), expected);
+  std::vector<typename decltype(get(v))::value_type> out;
+  for (const toml::value& e : v.as_array()) {
+    const auto x = get(e);
+    if (!x) t.fail(key, "an array holding " + describe(e), expected);
+    out.push_back(*x);
+  }
+  return out;
+}
+
+}  // namespace
+
 TomlTable::TomlTable(std::string source, const toml::value& table, std::string name)
     : source_(std::move(source)), table_(&table), name_(std::move(name)) {}
 
@@ -114,7 +155,8 @@ void TomlTable::missing(const std::string& key, const std::string& expected) con
 
 void TomlTable::allowOnly(const std::vector<std::string>& allowed) const {
   for (const std::string& k : keys())
-    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end() &&
+        std::find(allowed.begin(), allowed.end(), "[" + k + "]") == allowed.end()) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
       throw InputError(
@@ -125,33 +167,21 @@ void TomlTable::allowOnly(const std::vector<std::string>& allowed) const {
 }
 
 double TomlTable::number(const std::string& key, const std::string& expected) const {
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  const auto x = asNumber(v);
-  if (!x) fail(key, describe(v), expected);
-  if (!std::isfinite(*x)) fail(key, "a non-finite number", expected);
-  return *x;
+  const double x = required(*this, key, expected, asNumber);
+  if (!std::isfinite(x)) fail(key, "a non-finite number", expected);
+  return x;
 }
 
 long TomlTable::integer(const std::string& key, const std::string& expected) const {
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_integer()) fail(key, describe(v), expected);
-  return static_cast<long>(v.as_integer());
+  return required(*this, key, expected, asInteger);
 }
 
 std::string TomlTable::string(const std::string& key, const std::string& expected) const {
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_string()) fail(key, describe(v), expected);
-  return v.as_string().str;
+  return required(*this, key, expected, asString);
 }
 
 bool TomlTable::boolean(const std::string& key, const std::string& expected) const {
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_boolean()) fail(key, describe(v), expected);
-  return v.as_boolean();
+  return required(*this, key, expected, asBoolean);
 }
 
 double TomlTable::positive(const std::string& key, const std::string& expected) const {
@@ -167,45 +197,37 @@ long TomlTable::integerIn(const std::string& key, long lo, long hi) const {
   return n;
 }
 
-std::vector<double> TomlTable::numbers(const std::string& key) const {
-  const std::string expected = "an array of finite numbers";
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_array()) fail(key, describe(v), expected);
-  std::vector<double> out;
-  for (const toml::value& e : v.as_array()) {
-    const auto x = asNumber(e);
-    if (!x) fail(key, "an array holding " + describe(e), expected);
-    if (!std::isfinite(*x)) fail(key, "an array holding a non-finite number", expected);
-    out.push_back(*x);
-  }
+std::vector<double> TomlTable::numbers(const std::string& key, const std::string& expected) const {
+  const std::vector<double> out = requiredArray(*this, key, expected, asNumber);
+  for (double x : out)
+    if (!std::isfinite(x)) fail(key, "an array holding a non-finite number", expected);
   return out;
 }
 
-std::vector<long> TomlTable::integers(const std::string& key) const {
-  const std::string expected = "an array of integers";
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_array()) fail(key, describe(v), expected);
-  std::vector<long> out;
-  for (const toml::value& e : v.as_array()) {
-    if (!e.is_integer()) fail(key, "an array holding " + describe(e), expected);
-    out.push_back(static_cast<long>(e.as_integer()));
-  }
-  return out;
+std::vector<long> TomlTable::integers(const std::string& key, const std::string& expected) const {
+  return requiredArray(*this, key, expected, asInteger);
 }
 
-std::vector<std::string> TomlTable::strings(const std::string& key) const {
-  const std::string expected = "an array of strings";
-  if (!has(key)) missing(key, expected);
-  const toml::value& v = at(key);
-  if (!v.is_array()) fail(key, describe(v), expected);
-  std::vector<std::string> out;
-  for (const toml::value& e : v.as_array()) {
-    if (!e.is_string()) fail(key, "an array holding " + describe(e), expected);
-    out.push_back(e.as_string().str);
-  }
-  return out;
+std::vector<std::string> TomlTable::strings(const std::string& key, const std::string& expected) const {
+  return requiredArray(*this, key, expected, asString);
+}
+
+std::vector<std::string> TomlTable::numbersOrStrings(const std::string& key, const std::string& expected) const {
+  return requiredArray(*this, key, expected, [](const toml::value& e) -> std::optional<std::string> {
+    if (e.is_string()) return e.as_string().str;
+    if (e.is_integer()) return std::to_string(e.as_integer());
+    if (e.is_floating() && std::isfinite(e.as_floating())) return fmt::format("{}", e.as_floating());
+    return std::nullopt;
+  });
+}
+
+std::string TomlTable::oneOf(const std::string& key, const std::vector<std::string>& options) const {
+  std::string expected;
+  for (std::size_t i = 0; i < options.size(); ++i)
+    expected += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + ("\"" + options[i] + "\"");
+  const std::string s = string(key, expected);
+  if (std::find(options.begin(), options.end(), s) == options.end()) fail(key, describe(at(key)), expected);
+  return s;
 }
 
 Eigen::Vector3d TomlTable::vec3(const std::string& key, const std::string& expected) const {
@@ -231,6 +253,15 @@ std::string TomlTable::stringOr(const std::string& key, const std::string& fallb
 
 bool TomlTable::booleanOr(const std::string& key, bool fallback, const std::string& expected) const {
   return has(key) ? boolean(key, expected) : fallback;
+}
+
+double TomlTable::positiveOr(const std::string& key, double fallback, const std::string& expected) const {
+  return has(key) ? positive(key, expected) : fallback;
+}
+
+std::string TomlTable::oneOfOr(const std::string& key, const std::vector<std::string>& options,
+                               const std::string& fallback) const {
+  return has(key) ? oneOf(key, options) : fallback;
 }
 
 double TomlTable::nonNegativeOr(const std::string& key, double fallback, const std::string& expected) const {
@@ -264,10 +295,9 @@ std::optional<double> TomlTable::positiveQuantity(const UnitKeys& units, const s
 
 bool TomlTable::isString(const std::string& key) const { return has(key) && at(key).is_string(); }
 
-TomlTable TomlTable::requireTable(const std::string& key) const {
-  const std::string expected = "a table [" + dotted(key) + "]";
-  if (!has(key)) missing(key, expected);
-  return *table(key);
+TomlTable TomlTable::requireTable(const std::string& key, const std::string& expected) const {
+  if (!has(key)) missing(key, expected.empty() ? "a table [" + dotted(key) + "]" : expected);
+  return *table(key, expected);
 }
 
 std::vector<TomlTable> TomlTable::tables(const std::string& key) const {
@@ -284,10 +314,10 @@ std::vector<TomlTable> TomlTable::tables(const std::string& key) const {
   return out;
 }
 
-std::optional<TomlTable> TomlTable::table(const std::string& key) const {
+std::optional<TomlTable> TomlTable::table(const std::string& key, const std::string& expected) const {
   if (!has(key)) return std::nullopt;
   const toml::value& v = at(key);
-  if (!v.is_table()) fail(key, describe(v), "a table [" + dotted(key) + "]");
+  if (!v.is_table()) fail(key, describe(v), expected.empty() ? "a table [" + dotted(key) + "]" : expected);
   return TomlTable(source_, v, dotted(key));
 }
 

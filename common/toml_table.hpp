@@ -1,8 +1,8 @@
 #pragma once
 // Strict access to one table of a TOML input (toml11 v3): every error is an InputError naming
 // the file, the dotted key and its line, what was found and what was expected. The one table
-// reader of every TOML format (cell, scan, skgen, mdem scene and model, beam constants, plate);
-// the files themselves are read by common/toml_file.hpp.
+// reader of every TOML format (cell, scan, chain, skgen, mdem scene and model, beam constants,
+// plate); the files themselves are read by common/toml_file.hpp.
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,7 +29,8 @@ class TomlTable {
   std::string dotted(const std::string& key) const;
   int line(const std::string& key) const;  // 0 when unknown
 
-  // Throws for the first key (alphabetically) that is not listed, naming the allowed keys.
+  // Throws for the first key (alphabetically) that is not listed, naming the allowed keys. An
+  // entry written "[name]" allows the key `name` and says in the message that it is a table.
   void allowOnly(const std::vector<std::string>& allowed) const;
   [[noreturn]] void fail(const std::string& key, const std::string& found,
                          const std::string& expected) const;
@@ -45,10 +46,17 @@ class TomlTable {
   long integerIn(const std::string& key, long lo, long hi) const;  // "an integer from lo to hi"
   // [x, y, z]: three finite numbers.
   Eigen::Vector3d vec3(const std::string& key, const std::string& expected = "3 numbers [x, y, z]") const;
-  // Arrays of one type (every element checked).
-  std::vector<double> numbers(const std::string& key) const;
-  std::vector<long> integers(const std::string& key) const;
-  std::vector<std::string> strings(const std::string& key) const;
+  // One of `options` (a string): "\"a\", \"b\" or \"c\"" is what the message asks for.
+  std::string oneOf(const std::string& key, const std::vector<std::string>& options) const;
+  // Arrays of one type (every element checked; an empty array is returned as it is).
+  std::vector<double> numbers(const std::string& key, const std::string& expected = "an array of finite numbers") const;
+  std::vector<long> integers(const std::string& key, const std::string& expected = "an array of integers") const;
+  std::vector<std::string> strings(const std::string& key, const std::string& expected = "an array of strings") const;
+  // An array whose elements are each a finite number or a string, as text: integers in decimal,
+  // floats in the shortest form that reads back ("{}" of fmt: 0.5, 1e-05, 300), strings as they
+  // are. For settings a command line would take as words (e.g. the chain file's [knobs]).
+  std::vector<std::string> numbersOrStrings(
+      const std::string& key, const std::string& expected = "an array of numbers or strings") const;
 
   // The same for an optional key: `fallback` when it is absent.
   double numberOr(const std::string& key, double fallback, const std::string& expected = "a number") const;
@@ -56,6 +64,10 @@ class TomlTable {
   std::string stringOr(const std::string& key, const std::string& fallback,
                        const std::string& expected = "a string") const;
   bool booleanOr(const std::string& key, bool fallback, const std::string& expected = "true or false") const;
+  double positiveOr(const std::string& key, double fallback,
+                    const std::string& expected = "a positive number") const;
+  std::string oneOfOr(const std::string& key, const std::vector<std::string>& options,
+                      const std::string& fallback) const;
   double nonNegativeOr(const std::string& key, double fallback,
                        const std::string& expected = "a number >= 0") const;
   Eigen::Vector3d vec3Or(const std::string& key, const Eigen::Vector3d& fallback) const;
@@ -69,9 +81,10 @@ class TomlTable {
   std::optional<double> positiveQuantity(const UnitKeys& units, const std::string& expected = "a value > 0") const;
 
   // Sub-tables: `table` is nullopt when absent, `requireTable` fails then; `tables` reads an
-  // array of tables ([[key]]), named key[0], key[1], ... in messages.
-  std::optional<TomlTable> table(const std::string& key) const;
-  TomlTable requireTable(const std::string& key) const;
+  // array of tables ([[key]]), named key[0], key[1], ... in messages. `expected` defaults to
+  // "a table [dotted.key]".
+  std::optional<TomlTable> table(const std::string& key, const std::string& expected = "") const;
+  TomlTable requireTable(const std::string& key, const std::string& expected = "") const;
   std::vector<TomlTable> tables(const std::string& key) const;
 
  private:

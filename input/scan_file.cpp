@@ -20,14 +20,8 @@ namespace {
 
 std::vector<double> numberList(const TomlTable& t, const std::string& key,
                                const std::string& expected) {
-  const toml::value& v = t.at(key);
-  if (!v.is_array() || v.as_array().empty()) t.fail(key, describe(v), expected);
-  std::vector<double> out;
-  for (const toml::value& e : v.as_array()) {
-    const auto x = asNumber(e);
-    if (!x || !std::isfinite(*x)) t.fail(key, "an entry " + describe(e), expected);
-    out.push_back(*x);
-  }
+  const std::vector<double> out = t.numbers(key, expected);
+  if (out.empty()) t.fail(key, "an empty array", expected);
   return out;
 }
 
@@ -73,13 +67,12 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   in.cell = readCellFile(cellPath);
 
   ScanSettings& s = in.settings;
-  const std::string kind = root.string("kind", "\"stretch\", \"twist\" or \"bend\"");
+  const std::string kind = root.oneOf("kind", {"stretch", "twist", "bend"});
   const std::vector<std::pair<std::string, std::string>> listKeys = {
       {"stretch", "strains"}, {"twist", "twist_deg_per_cell"}, {"bend", "rotation_orders"}};
   std::string listKey;
   for (const auto& [k, key] : listKeys)
     if (k == kind) listKey = key;
-  if (listKey.empty()) root.fail("kind", "\"" + kind + "\"", "\"stretch\", \"twist\" or \"bend\"");
   for (const auto& [k, key] : listKeys)
     if (key != listKey && root.has(key))
       root.fail(key, key + " with kind = \"" + kind + "\"", listKey + " (the list of this kind)");
@@ -99,17 +92,13 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   } else {
     s.kind = ScanKind::Bend;
     const char* expected = "a non-empty array of ring rotation orders N_a (integers from 2 to 100000000)";
-    const toml::value& v = root.at("rotation_orders");
-    if (!v.is_array() || v.as_array().empty()) root.fail("rotation_orders", describe(v), expected);
-    for (const toml::value& e : v.as_array()) {
-      if (!e.is_integer() || e.as_integer() < 2 || e.as_integer() > 100000000L)
-        root.fail("rotation_orders", "an entry " + describe(e), expected);
-      s.rotationOrders.push_back(static_cast<int>(e.as_integer()));
+    const std::vector<long> orders = root.integers("rotation_orders", expected);
+    if (orders.empty()) root.fail("rotation_orders", "an empty array", expected);
+    for (long n : orders) {
+      if (n < 2 || n > 100000000L) root.fail("rotation_orders", "an array holding " + std::to_string(n), expected);
+      s.rotationOrders.push_back(static_cast<int>(n));
     }
-    const std::string dir = root.has("direction")
-                                ? root.string("direction", "\"soft\" or \"hard\"")
-                                : std::string("soft");
-    if (dir != "soft" && dir != "hard") root.fail("direction", "\"" + dir + "\"", "\"soft\" or \"hard\"");
+    const std::string dir = root.oneOfOr("direction", {"soft", "hard"}, "soft");
     s.direction = dir == "soft" ? BendDirection::Soft : BendDirection::Hard;
     if (root.has("ring_angular")) {
       const toml::value& a = root.at("ring_angular");

@@ -53,12 +53,6 @@ Confinement readConfinement(const TomlTable& t) {
   t.fail("type", "\"" + type + "\"", "\"power\" or \"woods-saxon\"");
 }
 
-TomlTable requireTable(const TomlTable& parent, const std::string& key, const std::string& what) {
-  const toml::value& v = parent.at(key);
-  if (!v.is_table()) parent.fail(key, describe(v), what);
-  return TomlTable(parent.source(), v, parent.dotted(key));
-}
-
 ElementSettings readElement(const TomlTable& t, const std::string& symbol, const SkgenJob& job) {
   t.allowOnly({"basis", "exponents_per_bohr", "powers", "density", "wavefunction", "shells"});
   ElementSettings s;
@@ -71,15 +65,11 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
   if (basis == "slater") {
     if (!t.has("exponents_per_bohr"))
       t.missing("exponents_per_bohr", "the Slater exponents α_j in 1/bohr, e.g. [0.5, 1.14, 2.62, 6.0]");
-    const toml::value& ex = t.at("exponents_per_bohr");
-    if (!ex.is_array() || ex.as_array().empty())
-      t.fail("exponents_per_bohr", describe(ex), "a non-empty array of exponents in 1/bohr");
-    for (const toml::value& x : ex.as_array()) {
-      const auto a = asNumber(x);
-      if (!a || !(*a > 0.0) || !std::isfinite(*a))
-        t.fail("exponents_per_bohr", describe(x), "exponents > 0 (1/bohr)");
-      s.slater.exponents.push_back(*a);
-    }
+    const char* exponents = "a non-empty array of exponents > 0 in 1/bohr";
+    s.slater.exponents = t.numbers("exponents_per_bohr", exponents);
+    if (s.slater.exponents.empty()) t.fail("exponents_per_bohr", "an empty array", exponents);
+    for (double a : s.slater.exponents)
+      if (!(a > 0.0)) t.fail("exponents_per_bohr", fmt::format("an array holding {}", a), exponents);
     std::vector<double> sorted = s.slater.exponents;
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t i = 1; i < sorted.size(); ++i)
@@ -97,12 +87,12 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
     t.fail("basis", "\"" + basis + "\"", "\"slater\" or \"grid\"");
   }
   if (!t.has("density")) t.missing("density", "the density confinement, e.g. { r0_bohr = 7.0, power = 2 }");
-  s.density = readConfinement(requireTable(t, "density", "a confinement table { r0_bohr, power }"));
+  s.density = readConfinement(t.requireTable("density", "a confinement table { r0_bohr, power }"));
   std::optional<Confinement> all;
   if (t.has("wavefunction"))
-    all = readConfinement(requireTable(t, "wavefunction", "a confinement table { r0_bohr, power }"));
+    all = readConfinement(t.requireTable("wavefunction", "a confinement table { r0_bohr, power }"));
   std::optional<TomlTable> shells;
-  if (t.has("shells")) shells = requireTable(t, "shells", "a table of shells, e.g. { 2s = {...}, 2p = {...} }");
+  if (t.has("shells")) shells = t.requireTable("shells", "a table of shells, e.g. { 2s = {...}, 2p = {...} }");
   std::vector<std::string> names;
   for (int k : e.valence) names.push_back(fmt::format("{}{}", e.shells[k].n, kShellNames[e.shells[k].l]));
   if (shells) {
@@ -116,7 +106,7 @@ ElementSettings readElement(const TomlTable& t, const std::string& symbol, const
   }
   for (const std::string& n : names) {
     if (shells && shells->has(n)) {
-      s.shells.push_back(readConfinement(requireTable(*shells, n, "a confinement table")));
+      s.shells.push_back(readConfinement(shells->requireTable(n, "a confinement table")));
     } else if (all) {
       s.shells.push_back(*all);
     } else {
@@ -146,7 +136,7 @@ SkgenJob readSkgenJob(const std::string& path) {
 
   double atomStep = 0.008;
   if (top.has("grid")) {
-    const TomlTable g = requireTable(top, "grid", "a table [grid]");
+    const TomlTable g = top.requireTable("grid", "a table [grid]");
     g.allowOnly({"spacing_bohr", "cutoff_bohr", "quadrature_points", "quadrature_extent_bohr", "atom_log_step"});
     if (g.has("spacing_bohr")) job.grid.spacing = g.number("spacing_bohr", "a spacing in bohr");
     if (!(job.grid.spacing > 0.0)) g.fail("spacing_bohr", fmt::format("{}", job.grid.spacing), "a spacing > 0");
@@ -189,13 +179,13 @@ SkgenJob readSkgenJob(const std::string& path) {
   }
 
   if (!top.has("elements")) top.missing("elements", "a table [elements.SYMBOL] per element");
-  const TomlTable elements = requireTable(top, "elements", "tables [elements.SYMBOL]");
+  const TomlTable elements = top.requireTable("elements", "tables [elements.SYMBOL]");
   // file order: toml11 keeps insertion order only with ordered tables; sort by line instead
   std::vector<std::pair<int, std::string>> order;
   for (const std::string& k : elements.keys()) order.emplace_back(elements.line(k), k);
   std::sort(order.begin(), order.end());
   for (const auto& [line, symbol] : order) {
-    ElementSettings s = readElement(requireTable(elements, symbol, "a table [elements." + symbol + "]"),
+    ElementSettings s = readElement(elements.requireTable(symbol, "a table [elements." + symbol + "]"),
                                     symbol, job);
     s.h = atomStep;
     job.elements.push_back(std::move(s));
@@ -208,11 +198,7 @@ SkgenJob readSkgenJob(const std::string& path) {
     return false;
   };
   if (top.has("pairs")) {
-    const toml::value& p = top.at("pairs");
-    if (!p.is_array()) top.fail("pairs", describe(p), "an array of \"A-B\" strings");
-    for (const toml::value& x : p.as_array()) {
-      if (!x.is_string()) top.fail("pairs", describe(x), "strings \"A-B\"");
-      const std::string s = x.as_string().str;
+    for (const std::string& s : top.strings("pairs", "an array of \"A-B\" strings")) {
       const auto dash = s.find('-');
       if (dash == std::string::npos || dash == 0 || dash + 1 == s.size())
         top.fail("pairs", "\"" + s + "\"", "pairs written \"A-B\", e.g. \"C-H\"");
@@ -230,9 +216,9 @@ SkgenJob readSkgenJob(const std::string& path) {
       for (const auto& b : job.elements) job.pairs.emplace_back(a.symbol, b.symbol);
   }
   if (top.has("repulsive")) {
-    const TomlTable rep = requireTable(top, "repulsive", "tables [repulsive.A-B]");
+    const TomlTable rep = top.requireTable("repulsive", "tables [repulsive.A-B]");
     for (const std::string& name : rep.keys()) {
-      const TomlTable t = requireTable(rep, name, "a table [repulsive." + name + "]");
+      const TomlTable t = rep.requireTable(name, "a table [repulsive." + name + "]");
       t.allowOnly({"curve_csv", "cutoff_bohr", "intervals"});
       const auto dash = name.find('-');
       RepulsiveRequest r;

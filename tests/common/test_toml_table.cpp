@@ -5,6 +5,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/toml_table.hpp"
@@ -75,6 +76,53 @@ TEST(TomlTable, OneQuantityInOneUnit) {
   expectInputError([&] { t.quantity({{"b_eV", 0.5}, {"b_hartree", 1.0}}); },
               {"key b_hartree (line 3)", "also b_eV", "one key per quantity"});
   expectInputError([&] { t.positiveQuantity({{"c_eV", 0.5}}); }, {"key c_eV (line 4)", "a value > 0"});
+}
+
+TEST(TomlTable, NumbersOrStringsAreReadAsText) {
+  const toml::value v = parse("k = [12, 0.5, 1e-5, \"ewald\", 300.0, -2]\nb = [1, true]\n"
+                              "inf = [1, inf]\nnone = 3\nempty = []\n");
+  const TomlTable t("t.toml", v, "");
+  EXPECT_EQ(t.numbersOrStrings("k"), (std::vector<std::string>{"12", "0.5", "1e-05", "ewald", "300", "-2"}));
+  EXPECT_TRUE(t.numbersOrStrings("empty").empty());
+  expectInputError([&] { t.numbersOrStrings("b"); },
+                   {"t.toml", "key b (line 2)", "an array holding a boolean (true)", "an array of numbers or strings"});
+  expectInputError([&] { t.numbersOrStrings("inf"); }, {"key inf (line 3)", "a float (inf)"});
+  expectInputError([&] { t.numbersOrStrings("none", "settings"); }, {"key none (line 4)", "an integer (3)", "settings"});
+  expectInputError([&] { t.numbersOrStrings("absent"); }, {"key absent", "required"});
+}
+
+TEST(TomlTable, OneOfAListOfWords) {
+  const toml::value v = parse("[shape]\nsection = \"square\"\nok = \"circle\"\nn = 2\n");
+  const TomlTable t = TomlTable("t.toml", v, "").requireTable("shape");
+  const std::vector<std::string> sections{"rectangle", "circle", "annulus"};
+  EXPECT_EQ(t.oneOf("ok", sections), "circle");
+  EXPECT_EQ(t.oneOfOr("absent", sections, "rectangle"), "rectangle");
+  expectInputError([&] { t.oneOf("section", sections); },
+                   {"key shape.section (line 2)", "a string (\"square\")", "\"rectangle\", \"circle\" or \"annulus\""});
+  expectInputError([&] { t.oneOfOr("n", sections, "circle"); }, {"key shape.n (line 4)", "an integer (2)", "\"annulus\""});
+  expectInputError([&] { t.oneOf("absent", sections); }, {"key shape.absent (table [shape] at line 1)", "required"});
+}
+
+TEST(TomlTable, PositiveOrAndOwnExpectations) {
+  const toml::value v = parse("zero = 0\nx = 2\nv = [1, \"a\"]\nflat = 1\n");
+  const TomlTable t("t.toml", v, "");
+  EXPECT_EQ(t.positiveOr("x", 7.0), 2.0);
+  EXPECT_EQ(t.positiveOr("absent", 7.0), 7.0);
+  expectInputError([&] { t.positiveOr("zero", 1.0, "a tolerance > 0"); }, {"key zero (line 1)", "an integer (0)", "a tolerance > 0"});
+  expectInputError([&] { t.numbers("v", "strains"); }, {"key v (line 3)", "an array holding a string (\"a\")", "strains"});
+  expectInputError([&] { t.strings("v", "pairs \"A-B\""); }, {"key v", "an integer (1)", "pairs \"A-B\""});
+  expectInputError([&] { t.integers("v", "orders"); }, {"key v", "a string", "orders"});
+  expectInputError([&] { t.table("flat", "a table of shells"); }, {"key flat (line 4)", "an integer (1)", "a table of shells"});
+  expectInputError([&] { t.requireTable("absent", "a confinement table"); }, {"key absent", "required", "a confinement table"});
+}
+
+TEST(TomlTable, AllowedTablesAreNamedInBrackets) {
+  const toml::value v = parse("a = 1\n[box]\nx = 1\n[boks]\ny = 2\n");
+  const TomlTable t("t.toml", v, "");
+  expectInputError([&] { t.allowOnly({"a", "[box]"}); },
+                   {"key boks (line 4)", "an unknown key 'boks'", "top-level keys or tables: a, [box]"});
+  const toml::value w = parse("a = 1\n[box]\nx = 1\n");
+  TomlTable("t.toml", w, "").allowOnly({"a", "[box]"});  // no error
 }
 
 }  // namespace

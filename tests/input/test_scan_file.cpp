@@ -9,6 +9,7 @@
 #include "common/progress_bar.hpp"
 #include "common/units.hpp"
 #include "input/scan_file.hpp"
+#include "tests/support/expect_input_error.hpp"
 
 using namespace mesochain;
 using namespace mesochain::objective;
@@ -155,6 +156,32 @@ TEST(ScanFile, BadInputNamesFileAndKey) {
     EXPECT_NE(std::string(e.what()).find("notref.json"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("scan reference"), std::string::npos) << e.what();
   }
+}
+
+// The lists and words of a scan file, read by common/toml_table: each message names the key
+// and its line, what was found and what was expected.
+TEST(ScanFile, BadListsAndWordsSayWhatWasFound) {
+  writeCells();
+  const std::string head = "format = 1\ncell = \"helical.toml\"\n";
+  const std::string straight = "format = 1\ncell = \"straight.toml\"\nkind = \"bend\"\n";
+  const std::string out = "[output]\njson = \"x.json\"\n";
+  const auto refused = [&](const std::string& text, std::initializer_list<const char*> fragments) {
+    mesochain::testing::expectInputError([&] { readScanFile(write("bad.toml", text)); }, fragments);
+  };
+  refused(head + "kind = \"squeeze\"\nstrains = [0.1]\n" + out,
+          {"bad.toml", "key kind (line 3)", "a string (\"squeeze\")", "\"stretch\", \"twist\" or \"bend\""});
+  refused(head + "kind = \"stretch\"\nstrains = []\n" + out,
+          {"key strains (line 4)", "an empty array", "a non-empty array of strains"});
+  refused(head + "kind = \"stretch\"\nstrains = [0.1, inf]\n" + out, {"key strains (line 4)", "non-finite"});
+  refused(head + "kind = \"twist\"\ntwist_deg_per_cell = 1\n" + out,
+          {"key twist_deg_per_cell (line 4)", "an integer (1)", "twist angles"});
+  refused(straight + "rotation_orders = [100, 1]\n" + out,
+          {"key rotation_orders (line 4)", "an array holding 1", "integers from 2 to 100000000"});
+  refused(straight + "rotation_orders = [100, 2.5]\n" + out,
+          {"key rotation_orders (line 4)", "an array holding a float (2.5)", "ring rotation orders"});
+  refused(straight + "rotation_orders = []\n" + out, {"key rotation_orders (line 4)", "an empty array"});
+  refused(straight + "rotation_orders = [100]\ndirection = \"sideways\"\n" + out,
+          {"key direction (line 5)", "a string (\"sideways\")", "\"soft\" or \"hard\""});
 }
 
 TEST(ProgressBar, RendersCountsTimesAndNote) {

@@ -172,3 +172,26 @@ TEST(SkgenJob, UnknownKeysWrongTypesAndBadPairsAreClearErrors) {
   EXPECT_NE(errorOf("dup", replaced(kHydrogen, "[0.5, 1.0, 2.0]", "[0.5, 1.0, 1.0]")).find("twice"),
             std::string::npos);
 }
+
+// The lists and sub-tables read through common/toml_table: each message names the key, its line,
+// what was found and what was expected.
+TEST(SkgenJob, BadListsAndTablesSayWhatWasFound) {
+  const auto has = [](const std::string& e, std::initializer_list<const char*> fragments) {
+    for (const char* f : fragments) EXPECT_NE(e.find(f), std::string::npos) << e << " lacks " << f;
+  };
+  has(errorOf("exp0", replaced(kHydrogen, "[0.5, 1.0, 2.0]", "[0.5, 0.0, 2.0]")),
+      {"key elements.H.exponents_per_bohr (line 8)", "an array holding 0", "exponents > 0 in 1/bohr"});
+  has(errorOf("expempty", replaced(kHydrogen, "[0.5, 1.0, 2.0]", "[]")),
+      {"key elements.H.exponents_per_bohr (line 8)", "an empty array", "a non-empty array"});
+  has(errorOf("expstr", replaced(kHydrogen, "[0.5, 1.0, 2.0]", "[0.5, \"x\"]")),
+      {"key elements.H.exponents_per_bohr (line 8)", "an array holding a string (\"x\")"});
+  has(errorOf("pairsint", replaced(kHydrogen, "[\"H-H\"]", "[\"H-H\", 3]")),
+      {"key pairs (line 2)", "an array holding an integer (3)", "an array of \"A-B\" strings"});
+  has(errorOf("pairsstr", replaced(kHydrogen, "[\"H-H\"]", "\"H-H\"")),
+      {"key pairs (line 2)", "a string (\"H-H\")", "an array of \"A-B\" strings"});
+  has(errorOf("density", replaced(kHydrogen, "density = { r0_bohr = 2.5, power = 2 }", "density = 2.5")),
+      {"key elements.H.density (line 10)", "a float (2.5)", "a confinement table { r0_bohr, power }"});
+  has(errorOf("grid", replaced(replaced(kHydrogen, "[grid]\nspacing_bohr = 0.5\ncutoff_bohr = 6.0\nquadrature_points = 32\n", ""),
+                            "functional = \"pbe\"", "functional = \"pbe\"\ngrid = 1")),
+      {"key grid (line 2)", "an integer (1)", "a table [grid]"});
+}
