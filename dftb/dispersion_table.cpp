@@ -17,10 +17,7 @@ const std::vector<std::string> kKcOnlyKeys{"taper_start", "bond_cutoff"};
 
 // A positive number in `unit` (the key's fallback when absent).
 double positive(const TomlTable& t, const char* key, double fallback, const char* unit) {
-  if (!t.has(key)) return fallback;
-  const double x = t.number(key, fmt::format("a positive number ({})", unit));
-  if (!(x > 0.0)) t.fail(key, fmt::format("{} {}", x, unit), fmt::format("a positive number ({})", unit));
-  return x;
+  return t.positiveOr(key, fallback, fmt::format("a positive number ({})", unit));
 }
 
 // model = "kc" (dftb/dispersion_kc.hpp): the parameter set and, when given, its cutoff and taper
@@ -56,18 +53,14 @@ void readKolmogorovCrespi(const TomlTable& t, KolmogorovCrespiSettings& kc) {
 
 // elements = { C = { epsilon = ..., r0 = ... }, ... }: every element of the cell.
 std::map<std::string, LjElement> readLjElements(const TomlTable& t, const std::vector<std::string>& species) {
-  const toml::value& v = t.at("elements");
   const char* shape = "an inline table of the elements of the cell, such as { C = { epsilon = 0.105, "
                       "r0 = 3.851 }, H = { epsilon = 0.044, r0 = 2.886 } } (kcal/mol, Å)";
-  if (!v.is_table()) t.fail("elements", describe(v), shape);
-  const TomlTable e(t.source(), v, t.dotted("elements"));
+  const TomlTable e = t.requireTable("elements", shape);
   std::map<std::string, LjElement> out;
   for (const std::string& el : e.keys()) {
     if (std::find(species.begin(), species.end(), el) == species.end())
       e.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
-    const toml::value& entry = e.at(el);
-    if (!entry.is_table()) e.fail(el, describe(entry), "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
-    const TomlTable p(t.source(), entry, e.dotted(el));
+    const TomlTable p = e.requireTable(el, "{ epsilon = KCAL_PER_MOL, r0 = ANGSTROM }");
     p.allowOnly({"epsilon", "r0"});
     const double eps = p.number("epsilon", "a positive well depth (kcal/mol)");
     if (!(eps > 0.0)) p.fail("epsilon", fmt::format("{} kcal/mol", eps), "a positive well depth (kcal/mol)");

@@ -171,19 +171,14 @@ void readParameters(const TomlTable& root, CellInput& in) {
         throw InputError(in.source, "table [parameters]",
                          "no table for the element pair " + a + "-" + b,
                          "set = \"NAME\" or an entry \"" + a + "-" + b + "\" = \"path\"");
-  if (t->has("max_angular_momentum")) {
-    const toml::value& v = t->at("max_angular_momentum");
-    if (!v.is_table())
-      t->fail("max_angular_momentum", describe(v),
-              "an inline table such as { C = \"p\", H = \"s\" }");
-    const TomlTable m(in.source, v, t->dotted("max_angular_momentum"));
-    for (const std::string& el : m.keys()) {
+  if (const auto m = t->table("max_angular_momentum", "an inline table such as { C = \"p\", H = \"s\" }")) {
+    for (const std::string& el : m->keys()) {
       if (!isSpecies(el))
-        m.fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
-      const std::string shell = m.string(el, "\"s\", \"p\", \"d\" or \"f\"");
+        m->fail(el, "element " + el + ", which is not in the cell", "elements of the cell only");
+      const std::string shell = m->string(el, "\"s\", \"p\", \"d\" or \"f\"");
       const std::string shells = "spdf";
       if (shell.size() != 1 || shells.find(shell[0]) == std::string::npos)
-        m.fail(el, "\"" + shell + "\"", "\"s\", \"p\", \"d\" or \"f\"");
+        m->fail(el, "\"" + shell + "\"", "\"s\", \"p\", \"d\" or \"f\"");
       in.maxAngularMomentum[el] = static_cast<int>(shells.find(shell[0]));
     }
   }
