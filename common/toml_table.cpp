@@ -221,6 +221,60 @@ std::vector<std::string> TomlTable::numbersOrStrings(const std::string& key, con
   });
 }
 
+std::optional<long> TomlTable::integerOrWord(const std::string& key, const std::string& word, long lo, long hi,
+                                             const std::string& what) const {
+  const std::string expected = fmt::format("\"{}\" or an integer from {} to {}{}", word, lo, hi, what.empty() ? "" : " (" + what + ")");
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (v.is_string() && v.as_string().str == word) return std::nullopt;
+  if (!v.is_integer() || v.as_integer() < lo || v.as_integer() > hi) fail(key, describe(v), expected);
+  return static_cast<long>(v.as_integer());
+}
+
+std::vector<TomlRow> TomlTable::rows(const std::string& key, std::size_t width, const std::string& expected,
+                                     const std::string& noun) const {
+  if (!has(key)) missing(key, expected);
+  const toml::value& v = at(key);
+  if (!v.is_array() || v.as_array().empty()) fail(key, describe(v) + (v.is_array() ? " that is empty" : ""), expected);
+  std::vector<TomlRow> out;
+  const auto& list = v.as_array();
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const toml::value& e = list[k];
+    out.emplace_back(source_, fmt::format("key {}, {} {}{}", dotted(key), noun, k + 1, lineSuffix(e)), e, expected);
+    if (!e.is_array() || e.as_array().size() != width)
+      out.back().fail(describe(e) + (e.is_array() ? fmt::format(" of {} entries, not {}", e.as_array().size(), width) : ""));
+  }
+  return out;
+}
+
+TomlRow::TomlRow(std::string source, std::string where, const toml::value& row, std::string expected)
+    : source_(std::move(source)), where_(std::move(where)), row_(&row), expected_(std::move(expected)) {}
+
+void TomlRow::fail(const std::string& found) const { fail(found, expected_); }
+
+void TomlRow::fail(const std::string& found, const std::string& expected) const {
+  throw InputError(source_, where_, found, expected);
+}
+
+double TomlRow::number(std::size_t i) const {
+  const toml::value& e = row_->as_array().at(i);
+  const auto x = asNumber(e);
+  if (!x || !std::isfinite(*x)) fail(fmt::format("entry {}: {}", i + 1, describe(e)));
+  return *x;
+}
+
+long TomlRow::integer(std::size_t i) const {
+  const toml::value& e = row_->as_array().at(i);
+  if (!e.is_integer()) fail(fmt::format("entry {}: {}", i + 1, describe(e)));
+  return static_cast<long>(e.as_integer());
+}
+
+std::string TomlRow::string(std::size_t i) const {
+  const toml::value& e = row_->as_array().at(i);
+  if (!e.is_string()) fail(fmt::format("entry {}: {}", i + 1, describe(e)));
+  return e.as_string().str;
+}
+
 std::string TomlTable::oneOf(const std::string& key, const std::vector<std::string>& options) const {
   std::string expected;
   for (std::size_t i = 0; i < options.size(); ++i)

@@ -13,6 +13,8 @@
 
 namespace mesochain {
 
+class TomlRow;
+
 class TomlTable {
  public:
   // `name` is the dotted path of the table ("" for the root).
@@ -46,6 +48,10 @@ class TomlTable {
   long integerIn(const std::string& key, long lo, long hi) const;  // "an integer from lo to hi"
   // [x, y, z]: three finite numbers.
   Eigen::Vector3d vec3(const std::string& key, const std::string& expected = "3 numbers [x, y, z]") const;
+  // An integer in [lo, hi] or the string `word` (e.g. angular = "all" | 12): nullopt for the
+  // word; the message asks for "\"word\" or an integer from lo to hi" plus `what`.
+  std::optional<long> integerOrWord(const std::string& key, const std::string& word, long lo, long hi,
+                                    const std::string& what = "") const;
   // One of `options` (a string): "\"a\", \"b\" or \"c\"" is what the message asks for.
   std::string oneOf(const std::string& key, const std::vector<std::string>& options) const;
   // Arrays of one type (every element checked; an empty array is returned as it is).
@@ -57,6 +63,13 @@ class TomlTable {
   // are. For settings a command line would take as words (e.g. the chain file's [knobs]).
   std::vector<std::string> numbersOrStrings(
       const std::string& key, const std::string& expected = "an array of numbers or strings") const;
+
+  // An array of arrays of `width` entries each (e.g. atoms = [["C", 0.0, 0.0, 0.0], ...] or
+  // walls = [[5, 5], [10, 10]]); empty or not such an array: the InputError naming the key,
+  // the entry (as `noun` k, counted from 1) and `expected`. Each row reads its entries by index
+  // (TomlRow).
+  std::vector<TomlRow> rows(const std::string& key, std::size_t width, const std::string& expected,
+                            const std::string& noun = "entry") const;
 
   // The same for an optional key: `fallback` when it is absent.
   double numberOr(const std::string& key, double fallback, const std::string& expected = "a number") const;
@@ -91,6 +104,24 @@ class TomlTable {
   std::string source_;
   const toml::value* table_;
   std::string name_;
+};
+
+// One row of TomlTable::rows: typed entries by index; errors name the key, the row (counted
+// from 1) and its line: "key geometry.atoms, atom 2 (line 7)".
+class TomlRow {
+ public:
+  TomlRow(std::string source, std::string where, const toml::value& row, std::string expected);
+  std::size_t size() const { return row_->as_array().size(); }
+  double number(std::size_t i) const;  // finite
+  long integer(std::size_t i) const;
+  std::string string(std::size_t i) const;
+  [[noreturn]] void fail(const std::string& found) const;
+  [[noreturn]] void fail(const std::string& found, const std::string& expected) const;
+
+ private:
+  std::string source_, where_;
+  const toml::value* row_;
+  std::string expected_;
 };
 
 // Index of the entry of `types` (anything with a `name`, e.g. mdem's element or bond types) that

@@ -20,19 +20,9 @@ void readKPointsTable(const TomlTable& t, bool ring, BandSettings& s) {
   } else if (!ring) {
     t.missing("helical", "the number of helical k-points (an integer >= 1)");
   }
-  if (t.has("angular")) {
-    const toml::value& v = t.at("angular");
-    const std::string expected = "\"all\" or a number of sampled angular quantum numbers from 1 to 1000000000";
-    if (v.is_string()) {
-      if (v.as_string().str != "all") t.fail("angular", describe(v), expected);
-      s.angular.samples = 0;
-    } else if (v.is_integer()) {
-      if (v.as_integer() < 1 || v.as_integer() > 1000000000L) t.fail("angular", describe(v), expected);
-      s.angular.samples = static_cast<int>(v.as_integer());
-    } else {
-      t.fail("angular", describe(v), expected);
-    }
-  }
+  if (t.has("angular"))
+    s.angular.samples =
+        static_cast<int>(t.integerOrWord("angular", "all", 1, 1000000000L, "sampled angular quantum numbers").value_or(0));
 }
 
 void readElectronsTable(const TomlTable& t, BandSettings& s) {

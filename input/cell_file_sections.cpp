@@ -32,30 +32,12 @@ ObjectiveCell readInlineAtoms(const TomlTable& g) {
   if (unit != "angstrom" && unit != "bohr")
     g.fail("unit", "\"" + unit + "\"", "\"angstrom\" or \"bohr\"");
   const double scale = unit == "angstrom" ? kAngstromInBohr : 1.0;
-  const toml::value& atoms = g.at("atoms");
-  const std::string expected = "an array of atoms [\"C\", x, y, z] (" + unit + ")";
-  if (!atoms.is_array() || atoms.as_array().empty())
-    g.fail("atoms", describe(atoms) + (atoms.is_array() ? " that is empty" : ""), expected);
   ObjectiveCell cell;
-  const auto& list = atoms.as_array();
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const toml::value& e = list[k];
-    auto bad = [&](const std::string& found) {
-      throw InputError(
-          g.source(), fmt::format("key {}, atom {}{}", g.dotted("atoms"), k + 1, lineSuffix(e)),
-          found, "an atom [\"Element\", x, y, z] with x, y, z in " + unit);
-    };
-    if (!e.is_array() || e.as_array().size() != 4) bad(describe(e) + " (not 4 entries)");
-    const auto& f = e.as_array();
-    if (!f[0].is_string() || !isElementName(f[0].as_string().str)) bad("element " + describe(f[0]));
-    Eigen::Vector3d x;
-    for (int c = 0; c < 3; ++c) {
-      const auto v = asNumber(f[c + 1]);
-      if (!v) bad("coordinate " + describe(f[c + 1]));
-      if (!std::isfinite(*v)) bad("a non-finite coordinate");
-      x[c] = *v * scale;
-    }
-    cell.addAtom(f[0].as_string().str, x);
+  for (const TomlRow& atom : g.rows("atoms", 4, "an array of atoms [\"Element\", x, y, z] with x, y, z in " + unit, "atom")) {
+    const std::string element = atom.string(0);
+    if (!isElementName(element)) atom.fail("element \"" + element + "\"");
+    const Eigen::Vector3d x(atom.number(1), atom.number(2), atom.number(3));
+    cell.addAtom(element, x * scale);
   }
   return cell;
 }
@@ -197,16 +179,11 @@ ObjectiveCell readNanotubeBuilder(const TomlTable& b) {
 // walls = [[n1, m1], [n2, m2], ...]
 std::vector<std::pair<int, int>> readWalls(const TomlTable& b) {
   const char* expected = "walls = [[n, m], ...] with at least one pair of chiral indices";
-  const toml::value& v = b.at("walls");
-  if (!v.is_array() || v.as_array().empty()) b.fail("walls", "another value", expected);
   std::vector<std::pair<int, int>> walls;
-  for (const auto& w : v.as_array()) {
-    if (!w.is_array() || w.as_array().size() != 2 || !w.as_array()[0].is_integer() ||
-        !w.as_array()[1].is_integer())
-      b.fail("walls", "an entry that is not a pair of integers", expected);
-    const auto n = w.as_array()[0].as_integer(), m = w.as_array()[1].as_integer();
+  for (const TomlRow& w : b.rows("walls", 2, expected, "wall")) {
+    const long n = w.integer(0), m = w.integer(1);
     if (n < 1 || n > 10000 || m < 0 || m > 10000)
-      b.fail("walls", fmt::format("({}, {})", n, m), "chiral indices 1 <= n, 0 <= m <= 10000");
+      w.fail(fmt::format("({}, {})", n, m), "chiral indices 1 <= n, 0 <= m <= 10000");
     walls.emplace_back(static_cast<int>(n), static_cast<int>(m));
   }
   return walls;
@@ -265,11 +242,9 @@ ChiralIndices readSheetDirection(const TomlTable& b) {
   }
   const char* expected = "chiral indices [n, m] (integers, 0 <= m <= n, not both 0)";
   if (!b.has("chiral")) b.missing("chiral", std::string("with direction = \"chiral\": ") + expected);
-  const toml::value& v = b.at("chiral");
-  if (!v.is_array() || v.as_array().size() != 2 || !v.as_array()[0].is_integer() ||
-      !v.as_array()[1].is_integer())
-    b.fail("chiral", describe(v), expected);
-  const long n = v.as_array()[0].as_integer(), m = v.as_array()[1].as_integer();
+  const std::vector<long> nm = b.integers("chiral", expected);
+  if (nm.size() != 2) b.fail("chiral", fmt::format("{} integers", nm.size()), expected);
+  const long n = nm[0], m = nm[1];
   if (n < 1 || m < 0 || m > n || n > 10000)
     b.fail("chiral", fmt::format("[{}, {}]", n, m),
            std::string(expected) + ", n <= 10000 (m > n is the mirror image of [m, n])");

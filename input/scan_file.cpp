@@ -100,17 +100,9 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
     }
     const std::string dir = root.oneOfOr("direction", {"soft", "hard"}, "soft");
     s.direction = dir == "soft" ? BendDirection::Soft : BendDirection::Hard;
-    if (root.has("ring_angular")) {
-      const toml::value& a = root.at("ring_angular");
-      const char* exp = "\"all\" or a number of sampled angular quantum numbers from 1 to 1000000000";
-      if (a.is_string() && a.as_string().str == "all") {
-        s.ringAngular.samples = 0;
-      } else if (a.is_integer() && a.as_integer() >= 1 && a.as_integer() <= 1000000000L) {
-        s.ringAngular.samples = static_cast<int>(a.as_integer());
-      } else {
-        root.fail("ring_angular", describe(a), exp);
-      }
-    }
+    if (root.has("ring_angular"))
+      s.ringAngular.samples = static_cast<int>(
+          root.integerOrWord("ring_angular", "all", 1, 1000000000L, "sampled angular quantum numbers").value_or(0));
     if (!in.cell.cell.symmetry.isRing() && std::abs(in.cell.cell.symmetry.twist()) > 1e-12)
       root.fail("cell", "a twisted cell (" + cellFile + ")",
                 "for kind = \"bend\" a cell with twist 0: a straight translational cell "

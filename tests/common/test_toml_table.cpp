@@ -91,6 +91,36 @@ TEST(TomlTable, NumbersOrStringsAreReadAsText) {
   expectInputError([&] { t.numbersOrStrings("absent"); }, {"key absent", "required"});
 }
 
+TEST(TomlTable, RowsOfAnArrayOfArraysAreReadByIndex) {
+  const toml::value v = parse("atoms = [[\"C\", 0.0, 1, 2.5],\n  [\"H\", 1.0, 0.0, 0.5]]\n"
+                              "short = [[\"C\", 0.0, 1, 2.5],\n  [\"H\", 1.0]]\n"
+                              "typed = [[\"C\", \"x\", 1, 2.5]]\nempty = []\nflat = [1, 2]\n");
+  const TomlTable t("t.toml", v, "");
+  const auto rows = t.rows("atoms", 4, "atoms [\"El\", x, y, z]", "atom");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1].string(0), "H");
+  EXPECT_EQ(rows[0].number(2), 1.0);  // an integer is a number
+  EXPECT_EQ(rows[0].number(3), 2.5);
+  expectInputError([&] { rows[1].integer(1); }, {"key atoms, atom 2 (line 2)", "entry 2: a float (1)"});
+  expectInputError([&] { t.rows("short", 4, "atoms", "atom"); },
+                   {"key short, atom 2 (line 4)", "an array of 2 entries, not 4", "expected atoms"});
+  expectInputError([&] { t.rows("typed", 4, "atoms", "atom")[0].number(1); }, {"key typed, atom 1", "entry 2: a string (\"x\")"});
+  expectInputError([&] { t.rows("empty", 2, "pairs"); }, {"key empty", "an array that is empty"});
+  expectInputError([&] { t.rows("flat", 2, "pairs"); }, {"key flat, entry 1", "an integer (1)"});
+  expectInputError([&] { t.rows("absent", 2, "pairs"); }, {"key absent", "required"});
+}
+
+TEST(TomlTable, IntegerOrOneWord) {
+  const toml::value v = parse("all = \"all\"\nn = 12\nzero = 0\nword = \"some\"\nx = 1.5\n");
+  const TomlTable t("t.toml", v, "");
+  EXPECT_FALSE(t.integerOrWord("all", "all", 1, 100).has_value());
+  EXPECT_EQ(t.integerOrWord("n", "all", 1, 100), 12);
+  expectInputError([&] { t.integerOrWord("zero", "all", 1, 100, "samples"); },
+                   {"key zero (line 3)", "an integer (0)", "\"all\" or an integer from 1 to 100 (samples)"});
+  expectInputError([&] { t.integerOrWord("word", "all", 1, 100); }, {"key word", "a string (\"some\")"});
+  expectInputError([&] { t.integerOrWord("x", "all", 1, 100); }, {"key x", "a float (1.5)"});
+}
+
 TEST(TomlTable, OneOfAListOfWords) {
   const toml::value v = parse("[shape]\nsection = \"square\"\nok = \"circle\"\nn = 2\n");
   const TomlTable t = TomlTable("t.toml", v, "").requireTable("shape");
