@@ -386,9 +386,13 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--critical-step", opt->criticalStep,
                        "with --inertia-scales / --bond-spectrum: [run] critical_step of the scaled runs")
         ->check(CLI::IsMember({"gershgorin", "gershgorin_body"}));
+    (*sub)->add_flag("--pull", opt->pull.enabled,
+                     "with --inertia-scales: the stress-strain curves instead of the table (pull at 1/ns to 30 % from "
+                     "the scene, after --relax-ns if given; a repeat of the scene as given with a perturbed start)");
+    (*sub)->add_flag("--pull-knobs-only", opt->pull.knobsOnly,
+                     "with --pull: only the scaled runs, without the reference and its repeat (another process)");
     (*sub)->add_option("--pull-relax-ns", opt->pull.relaxNs,
-                       "with --inertia-scales: also the stress-strain curves (relax this long with local damping, "
-                       "then pull at 1/ns to 30 %; a repeat of scale 1 with a perturbed start)")
+                       "with --pull: relax each run this long with local damping before its pull")
         ->check(CLI::PositiveNumber);
     (*sub)->add_option("--scene", opt->scene,
                        "a scene file (e.g. a deposited film) instead of the generated networks: its bodies, effects "
@@ -422,7 +426,6 @@ Command makeBenchNetworkCommand() {
       const std::vector<double> scales = opt->inertiaScales.empty() ? std::vector<double>{1.0} : opt->inertiaScales;
       const bool body = opt->criticalStep == "gershgorin_body";
       if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
-      opt->pull.enabled = opt->pull.relaxNs > 0.0;
       return printInertiaScaleCurve(s, scales, body, opt->seconds, opt->threads, opt->pull);
     }
     if (!opt->outerRatios.empty()) {

@@ -68,11 +68,12 @@ Curve pullCurve(const mdem::Scene& base, const PullProtocol& p, const std::strin
   relax.name = "relax", relax.steps = std::max(1L, std::lround(p.relaxNs / h)), relax.addEffects = {"local_damping"};
   relax.energiesCsv = "relax-energies.csv", relax.energiesEvery = 1000;
   mdem::StageSpec pull;
-  pull.name = "pull", pull.tensileStage = true, pull.energiesCsv = "pull-energies.csv", pull.energiesEvery = 1000;
+  pull.name = "pull", pull.tensileStage = true, pull.energiesCsv = "pull-energies.csv", pull.energiesEvery = 50;
   pull.steps = std::lround(2.0 * (p.finalStrain / p.strainRate + p.ramp) / h) + 10;
   pull.tensile.enabled = true, pull.tensile.gripWidth = p.gripWidth, pull.tensile.strainRate = p.strainRate;
   pull.tensile.ramp = p.ramp, pull.tensile.finalStrain = p.finalStrain, pull.tensile.csv = "pull-tensile.csv";
-  s.stages = {relax, pull};
+  s.stages = {pull};
+  if (p.relaxNs > 0.0) s.stages.insert(s.stages.begin(), relax);
   s.output = mdem::OutputSpec{};
   s.output.checkpointMinutes = 0.0;
   s.output.energiesEvery = 100;
@@ -160,7 +161,7 @@ int printInertiaScaleCurve(const mdem::Scene& scene, const std::vector<double>& 
       "kinetic energy.\n",
       n, threads, bodyFrame ? "gershgorin_body" : "gershgorin", scene.run.timeStepFraction, driftSteps);
   std::cout << "scale  critical_ns  h_ns        M  element-steps/s  ns/hour   |dE|/element_zJ  |dE|/<K>\n";
-  for (double scale : scales) {
+  for (double scale : pull.enabled ? std::vector<double>{} : scales) {
     const mdem::Scene s = scaled(scene, scale, bodyFrame);
     try {
       mdem::Simulation sim(s);
@@ -176,17 +177,19 @@ int printInertiaScaleCurve(const mdem::Scene& scene, const std::vector<double>& 
   }
   if (!pull.enabled) return 0;
   std::cout << fmt::format(
-      "\nStress-strain: relax {:.4g} ns (local damping), then pull at {:.3g}/ns to {:.3g} (grips {:.3g} nm, ramp {:.3g} "
+      "\nStress-strain: relax {:.4g} ns (local damping; 0: the scene as given, e.g. relaxed by --relax-ns), then pull at {:.3g}/ns to {:.3g} (grips {:.3g} nm, ramp {:.3g} "
       "ns);\nmean stress (MPa) per strain bin of {:.2g}; RMS difference from scale 1; 'repeat' is scale 1 with element 0 "
       "moved by {:.3g} nm.\n",
       pull.relaxNs, pull.strainRate, pull.finalStrain, pull.gripWidth, pull.ramp, kBin, pull.perturbation);
   const std::string root = (std::filesystem::temp_directory_path() / fmt::format("mesochain-inertia-{}", ::getpid())).string();
   // The reference: the scene as given (scale 1, its own critical_step); then its repeat, then the knobs.
   std::vector<std::pair<std::string, mdem::Scene>> runs;
-  runs.emplace_back("reference", scene);
-  mdem::Scene repeat = scene;
-  repeat.bodies.position[0].x() += pull.perturbation;
-  runs.emplace_back("repeat", repeat);
+  if (!pull.knobsOnly) {
+    runs.emplace_back("reference", scene);
+    mdem::Scene repeat = scene;
+    repeat.bodies.position[0].x() += pull.perturbation;
+    runs.emplace_back("repeat", repeat);
+  }
   for (double scale : scales)
     if (scale != 1.0 || bodyFrame) runs.emplace_back(fmt::format("{:g}{}", scale, bodyFrame ? "b" : ""), scaled(scene, scale, bodyFrame));
   std::vector<double> reference;

@@ -15,16 +15,17 @@ int printBondSpectrum(const mdem::Scene& scene, const std::vector<double>& scale
 
 struct PullProtocol {
   bool enabled = false;
-  double relaxNs = 0.0;        // relaxation with local damping before the pull (simulated time)
+  double relaxNs = 0.0;        // relaxation with local damping before each pull (simulated time; 0: none)
   double strainRate = 1.0;     // 1/ns
   double finalStrain = 0.3;
   double gripWidth = 15.0;     // nm
   double ramp = 0.02;          // ns
   double perturbation = 1e-6;  // nm: the repeat of scale 1 with element 0 moved by this along x
+  bool knobsOnly = false;      // only the scaled runs (reference and repeat in another process)
 };
 
-// Per scale (with critical_step = "gershgorin_body" when bodyFrame): critical and used step, outer ratio, element-steps/s, simulated ns per hour, the
-// energy error without damping at that scale's own step; with `pull`, the stress-strain curve of
+// Per scale (with critical_step = "gershgorin_body" when bodyFrame), without `pull`: critical and used step, outer ratio, element-steps/s, simulated ns per hour, the
+// energy error without damping at that scale's own step; with `pull` instead, the stress-strain curve of
 // the relax-and-pull protocol per scale, its RMS difference from the scene as given (scale 1), and
 // that of a repeat of it with a perturbed start (the run-to-run scatter). Returns 0.
 int printInertiaScaleCurve(const mdem::Scene& scene, const std::vector<double>& scales, bool bodyFrame, double seconds,
