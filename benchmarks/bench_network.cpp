@@ -391,6 +391,10 @@ Command makeBenchNetworkCommand() {
                      "the scene, after --relax-ns if given; a repeat of the scene as given with a perturbed start)");
     (*sub)->add_flag("--pull-knobs-only", opt->pull.knobsOnly,
                      "with --pull: only the scaled runs, without the reference and its repeat (another process)");
+    (*sub)->add_flag("--pull-repeat-only", opt->pull.repeatOnly, "with --pull: only the perturbed repeat of the scene");
+    (*sub)->add_option("--pull-perturbation-nm", opt->pull.perturbation,
+                       "with --pull: the repeat moves every element by up to this per axis (default 1e-6)")
+        ->check(CLI::PositiveNumber);
     (*sub)->add_option("--pull-relax-ns", opt->pull.relaxNs,
                        "with --pull: relax each run this long with local damping before its pull")
         ->check(CLI::PositiveNumber);

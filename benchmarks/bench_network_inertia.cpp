@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -178,20 +179,24 @@ int printInertiaScaleCurve(const mdem::Scene& scene, const std::vector<double>& 
   if (!pull.enabled) return 0;
   std::cout << fmt::format(
       "\nStress-strain: relax {:.4g} ns (local damping; 0: the scene as given, e.g. relaxed by --relax-ns), then pull at {:.3g}/ns to {:.3g} (grips {:.3g} nm, ramp {:.3g} "
-      "ns);\nmean stress (MPa) per strain bin of {:.2g}; RMS difference from scale 1; 'repeat' is scale 1 with element 0 "
-      "moved by {:.3g} nm.\n",
+      "ns);\nmean stress (MPa) per strain bin of {:.2g}; RMS difference from the first run; 'repeat' is the scene as given with "
+      "every element moved by up to {:.3g} nm per axis.\n",
       pull.relaxNs, pull.strainRate, pull.finalStrain, pull.gripWidth, pull.ramp, kBin, pull.perturbation);
   const std::string root = (std::filesystem::temp_directory_path() / fmt::format("mesochain-inertia-{}", ::getpid())).string();
   // The reference: the scene as given (scale 1, its own critical_step); then its repeat, then the knobs.
   std::vector<std::pair<std::string, mdem::Scene>> runs;
   if (!pull.knobsOnly) {
-    runs.emplace_back("reference", scene);
+    if (!pull.repeatOnly) runs.emplace_back("reference", scene);
+    // Every element moved by a uniform random vector of up to `perturbation` per axis (fixed seed).
     mdem::Scene repeat = scene;
-    repeat.bodies.position[0].x() += pull.perturbation;
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(-pull.perturbation, pull.perturbation);
+    for (mdem::Vec3& x : repeat.bodies.position) x += mdem::Vec3(u(gen), u(gen), u(gen));
     runs.emplace_back("repeat", repeat);
   }
-  for (double scale : scales)
-    if (scale != 1.0 || bodyFrame) runs.emplace_back(fmt::format("{:g}{}", scale, bodyFrame ? "b" : ""), scaled(scene, scale, bodyFrame));
+  if (!pull.repeatOnly)
+    for (double scale : scales)
+      if (scale != 1.0 || bodyFrame) runs.emplace_back(fmt::format("{:g}{}", scale, bodyFrame ? "b" : ""), scaled(scene, scale, bodyFrame));
   std::vector<double> reference;
   for (const auto& [name, s] : runs) {
     const Curve c = pullCurve(s, pull, root + "/" + name);

@@ -20,8 +20,9 @@ struct PullProtocol {
   double finalStrain = 0.3;
   double gripWidth = 15.0;     // nm
   double ramp = 0.02;          // ns
-  double perturbation = 1e-6;  // nm: the repeat of scale 1 with element 0 moved by this along x
+  double perturbation = 1e-6;  // nm: the repeat of scale 1 with every element moved by up to this per axis
   bool knobsOnly = false;      // only the scaled runs (reference and repeat in another process)
+  bool repeatOnly = false;     // only the repeat
 };
 
 // Per scale (with critical_step = "gershgorin_body" when bodyFrame), without `pull`: critical and used step, outer ratio, element-steps/s, simulated ns per hour, the
