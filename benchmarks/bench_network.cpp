@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "benchmarks/bench_network_inertia.hpp"
 #include "benchmarks/bench_network_mts.hpp"
 #include "app/cli/command.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
@@ -52,6 +53,10 @@ struct NetworkBenchOptions {
   double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
   std::string relaxedState;          // with relaxNs: the relaxed state's checkpoint, read if present
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
+  bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
+  std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
+  PullProtocol pull;                 // with inertiaScales: the stress-strain comparison
+  std::string criticalStep = "gershgorin";  // [run] critical_step of the scaled runs
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -371,6 +376,28 @@ Command makeBenchNetworkCommand() {
                        "multiple time stepping: throughput and accuracy at these outer/inner step ratios, and exit")
         ->delimiter(',')
         ->check(CLI::Range(1, 64));
+    (*sub)->add_flag("--bond-spectrum", opt->bondSpectrum,
+                     "the bonds' Gershgorin bound against the true largest eigenfrequency and its mode, per "
+                     "--inertia-scales (default 1), and exit");
+    (*sub)->add_option("--inertia-scales", opt->inertiaScales,
+                       "rotational inertia scaling: step, throughput, ns/hour and energy error per scale, and exit")
+        ->delimiter(',')
+        ->check(CLI::Range(1.0, 1e4));
+    (*sub)->add_option("--critical-step", opt->criticalStep,
+                       "with --inertia-scales / --bond-spectrum: [run] critical_step of the scaled runs")
+        ->check(CLI::IsMember({"gershgorin", "gershgorin_body"}));
+    (*sub)->add_flag("--pull", opt->pull.enabled,
+                     "with --inertia-scales: the stress-strain curves instead of the table (pull at 1/ns to 30 % from "
+                     "the scene, after --relax-ns if given; a repeat of the scene as given with a perturbed start)");
+    (*sub)->add_flag("--pull-knobs-only", opt->pull.knobsOnly,
+                     "with --pull: only the scaled runs, without the reference and its repeat (another process)");
+    (*sub)->add_flag("--pull-repeat-only", opt->pull.repeatOnly, "with --pull: only the perturbed repeat of the scene");
+    (*sub)->add_option("--pull-perturbation-nm", opt->pull.perturbation,
+                       "with --pull: the repeat moves every element by up to this per axis (default 1e-6)")
+        ->check(CLI::PositiveNumber);
+    (*sub)->add_option("--pull-relax-ns", opt->pull.relaxNs,
+                       "with --pull: relax each run this long with local damping before its pull")
+        ->check(CLI::PositiveNumber);
     (*sub)->add_option("--scene", opt->scene,
                        "a scene file (e.g. a deposited film) instead of the generated networks: its bodies, effects "
                        "and [run] time step")
@@ -396,6 +423,15 @@ Command makeBenchNetworkCommand() {
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
     if (opt->kernelCurve) return printKernelCurve(*opt);
+    if (opt->bondSpectrum || !opt->inertiaScales.empty()) {
+      mdem::Scene s =
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);
+      if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
+      const std::vector<double> scales = opt->inertiaScales.empty() ? std::vector<double>{1.0} : opt->inertiaScales;
+      const bool body = opt->criticalStep == "gershgorin_body";
+      if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
+      return printInertiaScaleCurve(s, scales, body, opt->seconds, opt->threads, opt->pull);
+    }
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =
           opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);

@@ -43,4 +43,12 @@ void Bodies::setAngularVelocityWorld(int i, const Vec3& omega) {
   angularMomentumBody[i] = inertia[i].cwiseProduct(rotateInverse(orientation[i], omega));
 }
 
+void scaleRotationalInertia(Bodies& b, const std::vector<ElementType>& types, double scale) {
+  for (int i = 0; i < b.size(); ++i) {
+    const Vec3 inertia = scale * types[b.type[i]].principalInertia();
+    b.angularMomentumBody[i] = b.angularMomentumBody[i].cwiseQuotient(b.inertia[i]).cwiseProduct(inertia);
+    b.inertia[i] = inertia;
+  }
+}
+
 }  // namespace mesochain::mdem

@@ -63,4 +63,12 @@ struct Bodies {
   void setAngularVelocityWorld(int i, const Vec3& omega);
 };
 
+// Rotational inertia scaling ([run] rotational_inertia_scale, docs/scene-file.md): every
+// element's principal moments become `scale` times those of its type (types[type[i]]), its mass
+// unchanged; the body angular momentum is rescaled so that the angular velocities stay. The
+// rotational vibrations slow by sqrt(scale), and with them the critical step they set
+// (O'Sullivan & Bray, Eng. Comput. 21, 278 (2004); a standard device of quasi-static DEM).
+// Idempotent: applying the same scale twice changes nothing.
+void scaleRotationalInertia(Bodies& bodies, const std::vector<ElementType>& types, double scale);
+
 }  // namespace mesochain::mdem

@@ -68,6 +68,9 @@ std::uint64_t sceneFingerprint(const Scene& s) {
   hashValue(h, s.run.timeStep), hashValue(h, s.run.timeStepFraction);
   hashValue(h, s.run.outerStepRatio), hashValue(h, s.run.outerStepFraction);
   for (const std::string& e : s.run.outerEffects) h = fnv1a(e.data(), e.size(), h);
+  // Only when set, so that the checkpoints of unscaled runs keep their fingerprint.
+  if (s.run.rotationalInertiaScale != 1.0) hashValue(h, s.run.rotationalInertiaScale);
+  if (s.run.bodyFrameCriticalStep) hashValue(h, s.run.bodyFrameCriticalStep);
   for (const ElementType& t : s.elementTypes)
     for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
   const Bodies& b = s.bodies;

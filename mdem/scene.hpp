@@ -31,6 +31,12 @@ inline constexpr int kMaxAutoOuterRatio = 8;
 struct RunControl {
   double timeStep = 0.0;              // ns
   double timeStepFraction = 0.0;      // > 0: time step = this fraction of the critical one
+  // Moments of inertia of every element times this (mass unchanged; body.hpp,
+  // scaleRotationalInertia): slows the rotational vibrations, lengthens their critical step.
+  double rotationalInertiaScale = 1.0;
+  // Frame of the translations in the critical step's Gershgorin bound (stability.hpp): false
+  // world axes ("gershgorin", the default), true each element's body axes ("gershgorin_body").
+  bool bodyFrameCriticalStep = false;
   // Multiple time stepping (stepper.hpp): the outer group is evaluated every outerStepRatio
   // steps (1: every step; 0: "auto", the largest ratio with ratio h <= outerStepFraction times
   // the outer group's own critical step, at most kMaxAutoOuterRatio).

@@ -253,7 +253,8 @@ void readOuterStep(const TomlTable& run, Scene& s) {
 void readRunAndOutput(const TomlTable& root, Scene& s) {
   const TomlTable run = root.requireTable("run");
   run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "stop_kinetic_energy_zJ",
-                 "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects"});
+                 "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects",
+                 "rotational_inertia_scale", "critical_step"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
     run.fail("time_step_ns", run.has("time_step_ns") ? "both time_step_ns and time_step_fraction" : "neither",
              "exactly one of time_step_ns, time_step_fraction");
@@ -264,6 +265,17 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
       run.fail("time_step_fraction", std::to_string(s.run.timeStepFraction), "a fraction in (0, 1]");
   }
   readOuterStep(run, s);
+  if (run.has("critical_step")) {
+    const std::string v = run.string("critical_step");
+    if (v != "gershgorin" && v != "gershgorin_body")
+      run.fail("critical_step", "\"" + v + "\"", "\"gershgorin\" (world axes) or \"gershgorin_body\" (body axes)");
+    s.run.bodyFrameCriticalStep = v == "gershgorin_body";
+  }
+  if (run.has("rotational_inertia_scale")) {
+    s.run.rotationalInertiaScale = run.positive("rotational_inertia_scale");
+    if (s.run.rotationalInertiaScale < 1.0 || s.run.rotationalInertiaScale > 1e4)
+      run.fail("rotational_inertia_scale", std::to_string(s.run.rotationalInertiaScale), "a factor in [1, 10000]");
+  }
   s.run.steps = root.has("stages") && !run.has("steps") ? 0 : run.integer("steps");
   if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
   s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;

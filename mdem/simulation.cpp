@@ -53,6 +53,8 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
       h_(scene.run.timeStep),
       steps_(startStep),
       cycleStart_(startStep) {
+  if (scene.run.rotationalInertiaScale != 1.0) scaleRotationalInertia(state_.bodies, scene.elementTypes, scene.run.rotationalInertiaScale);
+  const GershgorinFrame frame = scene.run.bodyFrameCriticalStep ? GershgorinFrame::Body : GershgorinFrame::World;
   std::vector<char> outer = outerGroup(scene, effects_);
   bool split = std::find(outer.begin(), outer.end(), 1) != outer.end();
   // Stability: the inner step against everything but the outer group, the outer step against
@@ -64,14 +66,19 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
     effects_[k]->addStabilityTerms(allTerms);
     if (outer[k]) outerNames_.push_back(effects_[k]->name());
   }
-  limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, innerTerms);
+  limit_ = criticalTimeStep(state_.bodies, bonds(), kinematics_, innerTerms, frame);
   if (split) {
-    outerLimit_ = criticalTimeStep(state_.bodies, {}, kinematics_, outerTerms);
+    outerLimit_ = criticalTimeStep(state_.bodies, {}, kinematics_, outerTerms, frame);
     // Impulse multiple time stepping is unstable at outer steps near a third of the fastest
     // inner period (nonlinear 3:1 resonance; Ma, Izaguirre & Skeel, SIAM J. Sci. Comput. 24,
     // 1951 (2003)): H < T / 3 = 2 pi / (3 omega), with omega the inner Gershgorin bound
     // (>= the true frequency, so the guard is conservative). Measured: docs/benchmarks.md.
-    const double resonance = 2.0 * units::kPi / (3.0 * limit_.omegaMax);
+    // The world-axes bound is 1.2-1.4x the true frequency in the films, and the measured break
+    // lies at 0.8-0.9 T/3 of the true period; the body-axes bound is within 1.1x of the true
+    // frequency once rotations are slowed (rotational_inertia_scale), so with it the guard takes
+    // 3/4 of T/3 (docs/benchmarks.md, "What sets the mDEM time step").
+    const double guardFraction = frame == GershgorinFrame::Body ? 0.75 : 1.0;
+    const double resonance = guardFraction * 2.0 * units::kPi / (3.0 * limit_.omegaMax);
     if (resonance < outerLimit_.criticalTimeStep) {
       outerLimit_ = limit_;
       outerLimit_.criticalTimeStep = resonance;
@@ -99,7 +106,7 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
     const double outerStep = scene.run.outerStepFraction * outerLimit_.criticalTimeStep;
     ratio = static_cast<int>(std::clamp(std::floor(outerStep / h_), 1.0, static_cast<double>(kMaxAutoOuterRatio)));
     if (ratio == 1) {
-      const StabilityLimit all = criticalTimeStep(state_.bodies, bonds(), kinematics_, allTerms);
+      const StabilityLimit all = criticalTimeStep(state_.bodies, bonds(), kinematics_, allTerms, frame);
       const double unsplit = fraction > 0.0 ? fraction * all.criticalTimeStep : h_;
       if (fraction > 0.0 && 0.5 * outerStep >= unsplit) {
         h_ = 0.5 * outerStep, ratio = 2;

@@ -18,7 +18,7 @@ bool fullyConstrained(const KinematicMap& k, int i) {
 
 StabilityLimit criticalTimeStep(const Bodies& s, const std::vector<Bond>& bonds,
                                 const KinematicMap& kinematics,
-                                const std::vector<ContactStabilityTerms>& contactTerms) {
+                                const std::vector<ContactStabilityTerms>& contactTerms, GershgorinFrame frame) {
   const int n = s.size();
   std::vector<double> rowSum(6 * static_cast<std::size_t>(n), 0.0);
   std::vector<char> active(n);
@@ -28,10 +28,13 @@ StabilityLimit criticalTimeStep(const Bodies& s, const std::vector<Bond>& bonds,
   };
   for (const Bond& b : bonds) {
     const Eigen::Matrix<double, 12, 12> kw = linearStiffness(b, s);
-    // Rotational DOFs to the principal frames: phi_world = R phi_body.
+    // Rotational DOFs to the principal frames: phi_world = R phi_body (translations too in the
+    // body frame: u_world = R u_body).
     Eigen::Matrix<double, 12, 12> t = Eigen::Matrix<double, 12, 12>::Identity();
-    t.block<3, 3>(3, 3) = toMatrix(s.orientation[b.a]);
-    t.block<3, 3>(9, 9) = toMatrix(s.orientation[b.b]);
+    const Mat3 ra = toMatrix(s.orientation[b.a]), rb = toMatrix(s.orientation[b.b]);
+    t.block<3, 3>(3, 3) = ra;
+    t.block<3, 3>(9, 9) = rb;
+    if (frame == GershgorinFrame::Body) t.block<3, 3>(0, 0) = ra, t.block<3, 3>(6, 6) = rb;
     const Eigen::Matrix<double, 12, 12> k = t.transpose() * kw * t;
     const int el[2] = {b.a, b.b};
     for (int r = 0; r < 12; ++r) {

@@ -51,9 +51,18 @@ struct StabilityLimit {
   double dampingRate = 0.0;       // 1/ns, beta of the limiting DOF
 };
 
+// Frame of the translational DOFs in the Gershgorin rows ([run] critical_step). World: the
+// world axes (the default). Body: each element's principal axes, like its rotations. The mass
+// block of a translation is m 1 in any orthonormal frame, so both are rigorous bounds; in the
+// body frame an element's axial stretching sits in one row instead of being spread over the world
+// rows of an oblique element, which for a straight chain makes the axial rows exact
+// (docs/benchmarks.md, "What sets the mDEM time step": world 1.12-1.22 x the true omega there).
+enum class GershgorinFrame { World, Body };
+
 // `contactTerms` (may be empty): one entry per element type.
 StabilityLimit criticalTimeStep(const Bodies& bodies, const std::vector<Bond>& bonds,
                                 const KinematicMap& kinematics,
-                                const std::vector<ContactStabilityTerms>& contactTerms = {});
+                                const std::vector<ContactStabilityTerms>& contactTerms = {},
+                                GershgorinFrame frame = GershgorinFrame::World);
 
 }  // namespace mesochain::mdem
