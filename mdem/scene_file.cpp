@@ -424,10 +424,12 @@ void readModelTables(const TomlTable& root, Scene& s) {
 Scene loadScene(const std::string& path) {
   const toml::value data = parseTomlFile(path, "scene file");
   const TomlTable root(path, data, "");
-  root.allowOnly({"format", "model", "effects", "element_types", "bond_types", "elements",
-                  "filaments", "bonds", "fixed", "loads", "prescribed", "local_damping",
-                  "viscous_damping", "run", "output", "vdw_contact", "contact_damping", "contacts",
-                  "periodic", "network", "tensile", "stages"});
+  std::vector<std::string> tables{"format", "model", "effects", "element_types", "bond_types", "elements",
+                                  "filaments", "bonds", "fixed", "loads", "prescribed", "run", "output",
+                                  "contacts", "periodic", "network", "tensile", "stages"};
+  for (const EffectRegistration* r : registeredEffects())  // each effect's own table
+    if (!r->table.name.empty()) tables.push_back(r->table.name);
+  root.allowOnly(tables);
   if (root.integer("format") != 1)
     root.fail("format", std::to_string(root.integer("format")), "1");
   Scene s;
