@@ -46,10 +46,10 @@ Eigen::VectorXd BroydenMixer::next(const Eigen::VectorXd& in, const Eigen::Vecto
 
 std::unique_ptr<ChargeMixer> makeChargeMixer(const std::string& name, double alpha) {
   if (!(alpha > 0.0 && alpha <= 1.0))
-    throw InputError("<scc>", "scc.mixing", std::to_string(alpha), "a number in (0, 1]");
+    throw InputError("the calculator settings", "scc.mixing", std::to_string(alpha), "a number in (0, 1]");
   if (name == "broyden") return std::make_unique<BroydenMixer>(alpha);
   if (name == "simple") return std::make_unique<SimpleMixer>(alpha);
-  throw InputError("<scc>", "scc.mixer", "\"" + name + "\"", "\"broyden\" or \"simple\"");
+  throw InputError("the calculator settings", "scc.mixer", "\"" + name + "\"", "\"broyden\" or \"simple\"");
 }
 
 }  // namespace mesochain::dftb

@@ -11,7 +11,7 @@ namespace mesochain::dftb {
 namespace {
 void requireRing(const objective::ObjectiveCell& cell) {
   if (!cell.symmetry.isRing())
-    throw InputError("<scc>", "symmetry",
+    throw InputError("the calculator settings", "scc.enabled with the cell's symmetry",
                      "a screw cell (T > 0) with SCC: its 1/r sum needs the helical Ewald sum, "
                      "which this build does not have yet",
                      "a closed ring or molecule (T = 0), or [scc] enabled = false");

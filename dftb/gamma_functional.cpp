@@ -49,7 +49,7 @@ double gammaValue(double r, double ua, double ub) {
 
 double shortRangeCutoff(double uMin, double tolerance) {
   if (!(uMin > 0) || !(tolerance > 0))
-    throw InputError("<scc>", "Hubbard U / tolerance",
+    throw InputError("the calculator settings", "scc.ewald_tolerance with the tables' Hubbard U",
                      "U = " + std::to_string(uMin) + ", tolerance = " + std::to_string(tolerance),
                      "positive values");
   // S is bounded by exp(-tau r) times a polynomial that is largest for equal tau at the

@@ -14,7 +14,7 @@ std::vector<double> hubbardPerSpecies(const ParameterSet& params) {
   for (int s = 0; s < params.speciesCount(); ++s) {
     const SpeciesData& sp = params.species(s);
     if (!(sp.hubbardU > 0.0))
-      throw InputError("<scc>", "Hubbard U of " + sp.name, std::to_string(sp.hubbardU),
+      throw InputError("the parameter tables", "Hubbard U of " + sp.name, std::to_string(sp.hubbardU),
                        "a positive Hubbard U in " + sp.name + "-" + sp.name + ".skf for SCC");
     u.push_back(sp.hubbardU);
   }
