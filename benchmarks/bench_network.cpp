@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "benchmarks/bench_network_coarsen.hpp"
 #include "benchmarks/bench_network_inertia.hpp"
 #include "benchmarks/bench_network_mts.hpp"
 #include "app/cli/command.hpp"
@@ -52,6 +53,8 @@ struct NetworkBenchOptions {
   std::string scene;                 // a scene file instead of the generated networks
   double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
   std::string relaxedState;          // with relaxNs: the relaxed state's checkpoint, read if present
+  std::string coarsenTo;             // with --scene: a scene whose element type is twice as long (bench_network_coarsen.hpp)
+  bool coarsenRelaxed = false;       // coarsen after --relax-ns (the relaxed film), not before
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
   bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
   std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
@@ -266,10 +269,16 @@ void printAlignedWindowRows(const mdem::TubePairPotential& potential, const std:
   }
 }
 
+// --scene, coarsened to --coarsen-to's elements when given.
+mdem::Scene sceneFile(const NetworkBenchOptions& o) {
+  mdem::Scene s = mdem::loadScene(o.scene);
+  return o.coarsenTo.empty() || o.coarsenRelaxed ? s : coarsenedFilm(s, o.coarsenTo);
+}
+
 // The scene of the kernel curve: the generated network, or --scene (relaxed with --relax-ns).
 mdem::Scene curveScene(const NetworkBenchOptions& o) {
   if (o.scene.empty()) return networkScene(o.totals.front(), o.tubeLength, false);
-  mdem::Scene s = mdem::loadScene(o.scene);
+  mdem::Scene s = sceneFile(o);
   return o.relaxNs > 0.0 ? relaxedScene(std::move(s), o.relaxNs, o.relaxedState) : s;
 }
 
@@ -402,6 +411,13 @@ Command makeBenchNetworkCommand() {
                        "a scene file (e.g. a deposited film) instead of the generated networks: its bodies, effects "
                        "and [run] time step")
         ->check(CLI::ExistingFile);
+    (*sub)->add_option("--coarsen-to", opt->coarsenTo,
+                       "with --scene: the same film with the element and bond type of this scene file, elements twice "
+                       "as long (pairs of consecutive elements merged; docs/benchmarks.md, \"The element length\")")
+        ->check(CLI::ExistingFile);
+    (*sub)->add_flag("--coarsen-relaxed", opt->coarsenRelaxed,
+                     "with --coarsen-to and --inertia-scales: coarsen the film after --relax-ns (one relaxed state for both "
+                     "lengths) instead of before");
     (*sub)->add_option("--relax-ns", opt->relaxNs,
                        "relax the network or scene for this long first (local damping; the bundled case), then measure")
         ->check(CLI::PositiveNumber);
@@ -425,8 +441,9 @@ Command makeBenchNetworkCommand() {
     if (opt->kernelCurve) return printKernelCurve(*opt);
     if (opt->bondSpectrum || !opt->inertiaScales.empty()) {
       mdem::Scene s =
-          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
+      if (opt->coarsenRelaxed && !opt->coarsenTo.empty()) s = coarsenedFilm(s, opt->coarsenTo);
       const std::vector<double> scales = opt->inertiaScales.empty() ? std::vector<double>{1.0} : opt->inertiaScales;
       const bool body = opt->criticalStep == "gershgorin_body";
       if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
@@ -434,7 +451,7 @@ Command makeBenchNetworkCommand() {
     }
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =
-          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : mdem::loadScene(opt->scene);
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       return printOuterRatioCurve(s, opt->outerRatios, opt->seconds, opt->threads);
     }
@@ -450,7 +467,7 @@ Command makeBenchNetworkCommand() {
       return 0;
     }
     std::vector<mdem::Scene> scenes;
-    if (!opt->scene.empty()) scenes.push_back(mdem::loadScene(opt->scene));
+    if (!opt->scene.empty()) scenes.push_back(sceneFile(*opt));
     else
       for (int total : opt->totals) scenes.push_back(networkScene(total, opt->tubeLength, opt->isotropic));
     if (opt->relaxNs > 0.0)
