@@ -10,16 +10,6 @@
 
 namespace mesochain::app {
 
-namespace {
-// The rotation taking unit vector u to unit vector v about their common normal.
-mdem::Quat minimalRotation(const mdem::Vec3& u, const mdem::Vec3& v) {
-  const mdem::Vec3 c = u.cross(v);
-  const double s = c.norm();
-  if (s < 1e-15) return mdem::Quat{};
-  return mdem::axisAngle(c / s, std::atan2(s, u.dot(v)));
-}
-}  // namespace
-
 mdem::Scene coarsenedFilm(const mdem::Scene& fine, const std::string& modelFile) {
   const mdem::Scene model = mdem::loadScene(modelFile);
   if (model.elementTypes.empty() || model.bondTypes.empty())
@@ -60,7 +50,7 @@ mdem::Scene coarsenedFilm(const mdem::Scene& fine, const std::string& modelFile)
       }
       const mdem::Vec3 chord = fine.bodies.position[k + 1] - fine.bodies.position[k];
       const mdem::Vec3 axis = mdem::rotate(fine.bodies.orientation[k], mdem::Vec3::UnitZ());
-      const mdem::Quat q = mdem::normalized(minimalRotation(axis, chord.normalized()) * fine.bodies.orientation[k]);
+      const mdem::Quat q = mdem::normalized(mdem::minimalRotation(axis, chord.normalized()) * fine.bodies.orientation[k]);
       const int index = s.bodies.size();
       s.bodies.add(0, type, 0.5 * (fine.bodies.position[k] + fine.bodies.position[k + 1]), q);
       if (previous >= 0) {

@@ -31,22 +31,9 @@ mdem::Scene scaled(mdem::Scene s, double scale, bool bodyFrame) {
 // Largest |E(t) - E(0)| per element and over the mean kinetic energy, without damping (bonds and
 // vdw_contact), `steps` steps at the scene's own step and outer ratio, energy sampled every 8.
 std::pair<double, double> energyDrift(mdem::Scene s, double h, int ratio, long steps) {
-  std::vector<std::string> kept;
-  for (const std::string& e : s.effects)
-    if (e == "bonds" || e == "vdw_contact") kept.push_back(e);
-  s.effects = kept;
-  s.run.timeStep = h, s.run.timeStepFraction = 0.0, s.run.outerStepRatio = ratio;
   if (ratio == 1) s.run.outerEffects.clear();
-  mdem::Simulation sim(s);
-  const double e0 = sim.energies().total();
-  double worst = 0.0, kinetic = 0.0;
-  long samples = 0;
-  for (long k = 0; k < steps; k += 8) {
-    sim.run(8);
-    worst = std::max(worst, std::abs(sim.energies().total() - e0));
-    kinetic += sim.kineticEnergy(), ++samples;
-  }
-  return {worst / s.bodies.size(), worst / (kinetic / std::max(1L, samples))};
+  const Accuracy a = conservativeRun(s, ratio, h, steps);
+  return {a.energyError / s.bodies.size(), a.energyError / a.kinetic};
 }
 
 struct Curve {

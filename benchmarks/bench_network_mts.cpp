@@ -25,15 +25,6 @@ double elementStepRate(mdem::Simulation& sim, double seconds) {
   return static_cast<double>(steps) * sim.bodies().size() / elapsed;
 }
 
-namespace {
-
-struct Accuracy {
-  double energyError = 0.0;  // largest |E(t) - E(0)|, zJ
-  double kinetic = 0.0;      // mean kinetic energy over the samples, zJ
-  std::vector<mdem::Vec3> positions;
-};
-
-// Without damping (the conservative effects only), `steps` steps of h, energy sampled every 8.
 Accuracy conservativeRun(mdem::Scene s, int ratio, double h, long steps) {
   std::vector<std::string> kept;
   for (const std::string& e : s.effects)
@@ -54,8 +45,6 @@ Accuracy conservativeRun(mdem::Scene s, int ratio, double h, long steps) {
   a.positions = sim.bodies().position;
   return a;
 }
-
-}  // namespace
 
 int printOuterRatioCurve(const mdem::Scene& scene, const std::vector<int>& ratios, double seconds, int threads) {
   omp_set_num_threads(threads);

@@ -14,6 +14,16 @@ namespace mesochain::app {
 // Element-steps per second of wall time of `sim` over `seconds`, after a warm-up of 8 steps.
 double elementStepRate(mdem::Simulation& sim, double seconds);
 
+struct Accuracy {
+  double energyError = 0.0;  // largest |E(t) - E(0)|, zJ
+  double kinetic = 0.0;      // mean kinetic energy over the samples, zJ
+  std::vector<mdem::Vec3> positions;
+};
+
+// Without damping (the conservative effects only: bonds and vdw_contact), `steps` steps of h at
+// outer ratio `ratio`, energy sampled every 8.
+Accuracy conservativeRun(mdem::Scene s, int ratio, double h, long steps);
+
 // `scene` names its effects and time_step_fraction; ratios that exceed the contacts' own
 // critical step are reported as refused. Returns 0.
 int printOuterRatioCurve(const mdem::Scene& scene, const std::vector<int>& ratios, double seconds, int threads);

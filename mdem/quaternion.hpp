@@ -71,6 +71,15 @@ inline Quat expMap(const Vec3& theta) {
 // Rotation about a unit axis by `angle`.
 inline Quat axisAngle(const Vec3& unitAxis, double angle) { return expMap(angle * unitAxis); }
 
+// The smallest rotation taking unit vector u to unit vector v (about u x v; identity when they
+// are parallel).
+inline Quat minimalRotation(const Vec3& u, const Vec3& v) {
+  const Vec3 c = u.cross(v);
+  const double s = c.norm();
+  if (s < 1e-15) return Quat{};
+  return axisAngle(c / s, std::atan2(s, u.dot(v)));
+}
+
 // Principal log: rotation vector with angle in [0, pi].
 Vec3 logMap(const Quat& q);
 

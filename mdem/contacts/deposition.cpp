@@ -102,13 +102,6 @@ void placeTube(const TubePath& path, const std::vector<double>& zeta, double l, 
   }
 }
 
-Quat minimalRotation(const Vec3& u, const Vec3& v) {
-  const Vec3 c = u.cross(v);
-  const double s = c.norm();
-  if (s < 1e-15) return Quat{};
-  return axisAngle(c / s, std::atan2(s, u.dot(v)));
-}
-
 Quat frameAlong(const Vec3& axis) {
   Vec3 ex = Vec3::UnitZ().cross(axis);
   if (ex.norm() < 1e-9) ex = axis.unitOrthogonal();
