@@ -116,10 +116,16 @@ Command makeDemCommand() {
                                    c.cycle, c.thickness, c.smallestThickness, c.density, c.peakPressure);
       }
       if (st.film) std::cout << "film at the end of stage " << st.name << " (" << st.filmJson << "):\n" << mdem::formatFilmStatistics(*st.film);
-      if (st.tensile && st.elastic.samples >= 2)
+      if (st.tensile && st.elastic.fitted)
         std::cout << fmt::format("elastic slope (Young's modulus of the specimen) {:.6g} MPa over strain {:.4g} - {:.4g} "
                                  "({} samples, R^2 {:.4f})\n",
                                  st.elastic.slope, st.elastic.from, st.elastic.to, st.elastic.samples, st.elastic.r2);
+      else if (st.tensile)
+        std::cout << fmt::format("no elastic slope: {} samples below strain {:.3g}{}; a slope needs at least {} spanning half "
+                                 "of 0 - {:.3g}\n",
+                                 st.elastic.samples, mdem::kElasticStrain,
+                                 st.elastic.samples > 0 ? fmt::format(" (strain {:.4g} - {:.4g})", st.elastic.from, st.elastic.to) : "",
+                                 mdem::kElasticMinimumSamples, mdem::kElasticStrain);
     }
     if (opt->profile) {
       std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",

@@ -47,7 +47,7 @@ std::vector<std::pair<long, fs::path>> vtkFrames(const std::string& prefix) {
 std::vector<StageSpec> stagesOf(const Scene& s) {
   if (!s.stages.empty()) return s.stages;
   StageSpec st;
-  st.steps = s.run.steps, st.stopKineticEnergy = s.run.stopKineticEnergy;
+  st.steps = s.run.steps, st.durationNs = s.run.durationNs, st.stopKineticEnergy = s.run.stopKineticEnergy;
   st.checkEvery = s.run.checkEvery, st.minimumSteps = s.run.minimumSteps;
   st.energiesCsv = s.output.energiesCsv, st.energiesEvery = s.output.energiesEvery, st.plotPng = s.output.plotPng;
   st.tensileStage = s.tensile.enabled;
@@ -234,10 +234,17 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   };
   const std::string checkpointPath = prepare(o.checkpoint);
   const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
-  const std::vector<StageSpec> stages = stagesOf(scene);
+  std::vector<StageSpec> stages = stagesOf(scene);
   const bool implicit = scene.stages.empty();
-  long totalSteps = 0;
-  for (const StageSpec& st : stages) totalSteps += st.steps;
+  // The steps of the run for the progress fraction: a stage given as a duration counts its
+  // steps once its time step is known (each stage's simulation sets its own), until then at the
+  // last known step.
+  auto totalStepsAt = [&stages](double h) {
+    long n = 0;
+    for (const StageSpec& st : stages) n += st.steps > 0 || h <= 0.0 ? st.steps : stepsForDuration(st.durationNs, h);
+    return std::max(1L, n);
+  };
+  long totalSteps = totalStepsAt(0.0);
   RunSummary r;
 
   // Resume, or start afresh in a folder without an interrupted run (or with --overwrite).
@@ -308,14 +315,20 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   auto lastCheckpoint = Clock::now();
   const bool byMinutes = o.checkpointMinutes > 0.0;
   auto nextMultiple = [](long k, long n) { return (k / n + 1) * n; };
-  const long every = std::max(1L, totalSteps / 200);
+  long every = std::max(1L, totalSteps / 200);
   std::unique_ptr<StageRun> previous;
   for (; stageIndex < static_cast<std::int64_t>(stages.size()); ++stageIndex) {
-    const StageSpec& spec = stages[stageIndex];
+    StageSpec& spec = stages[stageIndex];
     auto run = std::make_unique<StageRun>(scene, spec, stageScene(scene, spec, stageIndex, stageBodies, stageTime, implicit), dir,
                                           stageIndex, stageTime, stageStep, stageBodies);
     run->setStart(stageTime, stageStep);
     Simulation& sim = run->sim();
+    // A duration becomes steps at the stage's own time step, set from the state the stage starts
+    // in, so a resumed run resolves it to the same count.
+    if (spec.steps == 0 && spec.durationNs > 0.0) {
+      spec.steps = stepsForDuration(spec.durationNs, sim.timeStep());
+      totalSteps = totalStepsAt(sim.timeStep()), every = std::max(1L, totalSteps / 200);
+    }
     if (options.profile) sim.setProfile(&r.profile);
     const bool resumingHere = resumed && !previous;
     if (resumingHere) {

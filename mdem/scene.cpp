@@ -1,10 +1,18 @@
 #include "mdem/scene.hpp"
 
+#include <cmath>
+
 namespace mesochain::mdem {
 
 BondStiffness BondType::stiffnessFor(double restLength) const {
   if (!fromModuli) return stiffness;
   return {youngModulus / restLength, shearModulus / restLength};
+}
+
+long stepsForDuration(double durationNs, double h) {
+  const double n = durationNs / h;
+  const double whole = std::round(n);
+  return std::max(1L, static_cast<long>(std::abs(n - whole) <= 1e-9 * whole ? whole : std::ceil(n)));
 }
 
 BondSection sectionOf(const ElementType& t) {

@@ -44,10 +44,17 @@ struct RunControl {
   double outerStepFraction = 1.0;
   std::vector<std::string> outerEffects;  // empty: every conservative effect that couples filaments
   long steps = 0;                     // maximum number of steps
+  // > 0 instead of steps: the run's length in ns, steps = ceil(duration / time step) once the
+  // step is known (stepsForDuration).
+  double durationNs = 0.0;
   double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)
   long checkEvery = 100;              // steps between stop checks
   long minimumSteps = 0;              // no stop before this step
 };
+
+// The steps of a run or stage of `durationNs` at time step h: the fewest steps whose time reaches
+// the duration (a duration within 1e-9 of a whole number of steps is that number).
+long stepsForDuration(double durationNs, double h);
 
 struct OutputSpec {
   std::string directory = ".";        // relative to the working directory
@@ -114,6 +121,7 @@ struct StageSpec {
   bool tensileStage = false;            // kind = "tensile" (grips chosen at the stage's start)
   bool compressionStage = false;        // kind = "compression" (plates placed at the stage's start)
   long steps = 0;                       // maximum steps of the stage
+  double durationNs = 0.0;              // > 0 instead of steps: the stage's length in ns (stepsForDuration)
   double stopKineticEnergy = -1.0;      // zJ (< 0: off)
   long checkEvery = 100;
   long minimumSteps = 0;

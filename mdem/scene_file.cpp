@@ -252,7 +252,7 @@ void readOuterStep(const TomlTable& run, Scene& s) {
 
 void readRunAndOutput(const TomlTable& root, Scene& s) {
   const TomlTable run = root.requireTable("run");
-  run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "stop_kinetic_energy_zJ",
+  run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "duration_ns", "stop_kinetic_energy_zJ",
                  "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects",
                  "rotational_inertia_scale", "critical_step"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
@@ -276,8 +276,16 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
     if (s.run.rotationalInertiaScale < 1.0 || s.run.rotationalInertiaScale > 1e4)
       run.fail("rotational_inertia_scale", std::to_string(s.run.rotationalInertiaScale), "a factor in [1, 10000]");
   }
-  s.run.steps = root.has("stages") && !run.has("steps") ? 0 : run.integer("steps");
-  if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
+  if (!root.has("stages")) {
+    if (run.has("steps") && run.has("duration_ns"))
+      run.fail("duration_ns", "both steps and duration_ns", "exactly one of steps, duration_ns (the run's length)");
+    if (run.has("duration_ns")) {
+      s.run.durationNs = run.positive("duration_ns");
+    } else {
+      s.run.steps = run.integer("steps");
+      if (s.run.steps < 0) run.fail("steps", std::to_string(s.run.steps), "a number of steps >= 0");
+    }
+  }
   s.run.stopKineticEnergy = run.has("stop_kinetic_energy_zJ") ? run.positive("stop_kinetic_energy_zJ") : -1.0;
   s.run.checkEvery = run.integerOr("check_every", 100);
   if (s.run.checkEvery < 1) run.fail("check_every", std::to_string(s.run.checkEvery), "at least 1");
@@ -355,12 +363,12 @@ void readCompressionTable(const TomlTable& t, CompressionSpec& c) {
 // the stages.
 void readStages(const TomlTable& root, Scene& s) {
   const TomlTable run = root.requireTable("run");
-  for (const char* k : {"steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps"})
+  for (const char* k : {"steps", "duration_ns", "stop_kinetic_energy_zJ", "check_every", "minimum_steps"})
     if (run.has(k)) run.fail(k, "a [run] stop key beside [[stages]]", "the key in each stage (the time step stays in [run])");
   if (!s.output.energiesCsv.empty() || !s.output.plotPng.empty())
     root.fail("output", "energies_csv / plot_png in [output] beside [[stages]]", "each stage's own energies_csv / plot_png");
   for (const TomlTable& t : root.tables("stages")) {
-    t.allowOnly({"name", "kind", "steps", "stop_kinetic_energy_zJ", "check_every", "minimum_steps", "add_effects",
+    t.allowOnly({"name", "kind", "steps", "duration_ns", "stop_kinetic_energy_zJ", "check_every", "minimum_steps", "add_effects",
                  "energies_csv", "energies_every", "plot_png", "tensile", "compression"});
     StageSpec st;
     st.name = t.string("name");
@@ -372,8 +380,15 @@ void readStages(const TomlTable& root, Scene& s) {
       t.fail("kind", "\"" + kind + "\"", "\"relax\", \"tensile\" or \"compression\"");
     st.tensileStage = kind == "tensile";
     st.compressionStage = kind == "compression";
-    st.steps = t.integer("steps");
-    if (st.steps < 1) t.fail("steps", std::to_string(st.steps), "at least 1 step");
+    if (t.has("steps") == t.has("duration_ns"))
+      t.fail(t.has("steps") ? "duration_ns" : "steps", t.has("steps") ? "both steps and duration_ns" : "neither steps nor duration_ns",
+             "exactly one of steps, duration_ns (the stage's length)");
+    if (t.has("duration_ns")) {
+      st.durationNs = t.positive("duration_ns");
+    } else {
+      st.steps = t.integer("steps");
+      if (st.steps < 1) t.fail("steps", std::to_string(st.steps), "at least 1 step");
+    }
     st.stopKineticEnergy = t.has("stop_kinetic_energy_zJ") ? t.positive("stop_kinetic_energy_zJ") : -1.0;
     st.checkEvery = t.integerOr("check_every", 100);
     if (st.checkEvery < 1) t.fail("check_every", std::to_string(st.checkEvery), "at least 1");

@@ -158,7 +158,8 @@ ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double fro
     ++f.samples;
   }
   const double n = f.samples, dxx = n * sxx - sx * sx, dyy = n * syy - sy * sy, dxy = n * sxy - sx * sy;
-  if (f.samples < 2 || !(dxx > 0.0)) return {f.samples, 0.0, 0.0, 0.0, f.from, f.to};
+  if (f.samples < kElasticMinimumSamples || !(dxx > 0.0) || f.to - f.from < 0.5 * (to - from)) return f;
+  f.fitted = true;
   f.slope = dxy / dxx;
   f.intercept = (sy - f.slope * sx) / n;
   f.r2 = dyy > 0.0 ? dxy * dxy / (dxx * dyy) : 1.0;
@@ -195,7 +196,7 @@ void TensileRecorder::writePlot(const std::string& path) const {
   fc.y.label = "pairs, elements";
   fs.add(fmt::format("stress (A = {:.4g} nm^2)", area_), strain, stress);
   const ElasticFit fit = fitElasticSlope(samples_, 0.0, kElasticStrain);
-  if (fit.samples >= 2) {
+  if (fit.fitted) {
     plot::SeriesStyle dashed;
     dashed.color = plot::paletteColor(1);
     dashed.dashed = true;

@@ -50,8 +50,12 @@ struct TensileSample {
 
 // Least-squares line stress = intercept + slope * strain over the samples with strain in
 // [from, to]: the elastic slope (Young's modulus of the specimen, MPa) and how well a line fits.
+// A slope is fitted only from at least kElasticMinimumSamples samples spanning at least half of
+// [from, to]; otherwise (a stage that ended early, too few samples) there is no slope (fitted
+// false, slope 0), and reports say so instead of printing a line through noise.
 struct ElasticFit {
-  int samples = 0;                 // used (< 2: no fit, slope 0)
+  bool fitted = false;
+  int samples = 0;                 // in [from, to]
   double slope = 0.0;              // MPa
   double intercept = 0.0;          // MPa
   double r2 = 0.0;                 // coefficient of determination
@@ -60,6 +64,7 @@ struct ElasticFit {
 ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double from, double to);
 // The strain below which the reports fit the elastic slope (3 %).
 inline constexpr double kElasticStrain = 0.03;
+inline constexpr int kElasticMinimumSamples = 3;
 
 class TensileRecorder {
  public:

@@ -304,6 +304,31 @@ TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
   expectStagedResumesMatch(reference, {35L, 95L, 150L});
 }
 
+// duration_ns instead of steps: a stage runs the fewest steps whose time reaches its duration,
+// at the stage's own time step (a whole number of steps within rounding is that number), and a
+// run given by durations is the run given by those steps, also when it is killed and resumed.
+TEST_F(Restart, StagesGivenAsDurationsRunTheStepsOfTheirTimeAndResumeBitForBit) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  const RunSummary bySteps = run("steps");
+  ASSERT_EQ(bySteps.stages.size(), 2u);
+  ASSERT_EQ(bySteps.stages[1].steps, 110);  // not ended by final_strain
+  const double relaxStep = bySteps.timeStep, pullTime = bySteps.stages[1].time;
+  std::string text = stagedScene(90, 110);
+  text.replace(text.find("steps = 90\n"), 11, fmt::format("duration_ns = {:.17g}\n", 89.6 * relaxStep));
+  text.replace(text.find("steps = 110\n"), 12, fmt::format("duration_ns = {:.17g}\n", pullTime));
+  std::ofstream(scenePath_) << text;
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  EXPECT_EQ(reference.stages[0].steps, 90);
+  EXPECT_EQ(reference.stages[1].steps, 110);
+  EXPECT_EQ(reference.stages[0].time, bySteps.stages[0].time);
+  EXPECT_GE(reference.stages[0].time, 89.6 * relaxStep);
+  EXPECT_EQ(reference.finalEnergies.total(), bySteps.finalEnergies.total());
+  for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
+    EXPECT_EQ(slurp(dir_ / "steps" / f), slurp(dir_ / "reference" / f)) << f;
+  expectStagedResumesMatch(reference, {35L, 95L});
+}
+
 TEST_F(Restart, StageErrorsNameTheKey) {
   auto expectError = [&](const std::string& text, const char* key) {
     std::ofstream(scenePath_) << text;
@@ -334,6 +359,15 @@ TEST_F(Restart, StageErrorsNameTheKey) {
   t = good;
   t.replace(t.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nsteps = 5\n");
   expectError(t, "run.steps");
+  t = good;
+  t.replace(t.find("steps = 10\n"), 11, "steps = 10\nduration_ns = 0.01\n");
+  expectError(t, "stages[0].duration_ns");  // both
+  t = good;
+  t.replace(t.find("steps = 10\n"), 11, "");
+  expectError(t, "stages[0].steps");  // neither
+  t = good;
+  t.replace(t.find("steps = 10\n"), 11, "duration_ns = -1.0\n");
+  expectError(t, "stages[0].duration_ns");
 }
 
 }  // namespace

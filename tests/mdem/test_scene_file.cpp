@@ -4,6 +4,7 @@
 #include <fstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
@@ -113,6 +114,30 @@ TEST_F(MdemSceneFile, ValidSceneRunsAndWritesOutputs) {
   std::getline(xyz, line);
   EXPECT_NE(line.find("orientation:R:4"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "out" / "vtk" / "f_000002.vtk"));
+}
+
+// [run] duration_ns instead of steps (no stages): the fewest steps that reach it; both or a bad
+// value are refused naming the key.
+TEST_F(MdemSceneFile, RunGivenAsADurationTakesTheStepsThatReachIt) {
+  const RunSummary bySteps = runScene(loadScene(write("scene.toml", kScene)), (dir_ / "steps").string(), nullptr);
+  const double h = bySteps.timeStep;
+  const Scene s = loadScene(write("scene.toml", replace(kScene, "steps = 50", fmt::format("duration_ns = {:.17g}", 37.2 * h))));
+  EXPECT_EQ(s.run.steps, 0);
+  const RunSummary r = runScene(s, (dir_ / "out").string(), nullptr);
+  EXPECT_EQ(r.steps, 38);
+  EXPECT_GE(r.time, 37.2 * h);
+  EXPECT_LT(r.time, 38.2 * h);
+  expectError(replace(kScene, "steps = 50", "steps = 50\nduration_ns = 1.0"), {"key run.duration_ns", "exactly one of steps"});
+  expectError(replace(kScene, "steps = 50", "duration_ns = 0.0"), {"key run.duration_ns"});
+}
+
+// stepsForDuration: the fewest whole steps reaching the time; a whole number within rounding.
+TEST(MdemStepsForDuration, CountsTheStepsThatReachTheDuration) {
+  EXPECT_EQ(stepsForDuration(3 * 0.1, 0.1), 3);     // (3 * 0.1) / 0.1 = 3.0000000000000004, not 4
+  EXPECT_EQ(stepsForDuration(0.3, 0.1), 3);         // 0.3 / 0.1 = 2.9999999999999996
+  EXPECT_EQ(stepsForDuration(1.05, 0.1), 11);
+  EXPECT_EQ(stepsForDuration(6.0, 4.587e-5), 130805);
+  EXPECT_EQ(stepsForDuration(1e-9, 1.0), 1);        // at least one step
 }
 
 TEST_F(MdemSceneFile, ExampleSceneLoads) {

@@ -63,7 +63,8 @@ TEST(MdemTensile, SingleTubeStressStrainSlopeIsYATubeOverAFilm) {
     rec.record(sim);
   }
   // Least-squares slope over the constant-velocity part (strain > 0.4 %).
-  const ElasticFit fit = fitElasticSlope(rec.samples(), 0.004, 1.0);
+  const ElasticFit fit = fitElasticSlope(rec.samples(), 0.004, rec.samples().back().strain);
+  ASSERT_TRUE(fit.fitted);
   ASSERT_GT(fit.samples, 5);
   const double slope = fit.slope;
   EXPECT_GT(fit.r2, 0.99);
@@ -87,8 +88,32 @@ TEST(MdemTensile, ElasticFitRecoversALineAndIgnoresSamplesOutsideItsRange) {
   EXPECT_NEAR(f.intercept, 5.0, 1e-12);
   EXPECT_NEAR(f.r2, 1.0, 1e-12);
   EXPECT_DOUBLE_EQ(f.to, 0.03);
+  EXPECT_TRUE(f.fitted);
   EXPECT_EQ(fitElasticSlope(samples, 0.1, 0.2).samples, 0);  // nothing in range: no fit
+  EXPECT_FALSE(fitElasticSlope(samples, 0.1, 0.2).fitted);
   EXPECT_EQ(fitElasticSlope(samples, 0.1, 0.2).slope, 0.0);
+}
+
+// A stage that ends at a tiny strain (here 2 samples, or 3 over a tenth of the window) has no
+// slope: a line through two nearly equal strains is noise (a 1-step pull printed -2.7e10 MPa).
+TEST(MdemTensile, ElasticFitRefusesTooFewSamplesOrTooNarrowARange) {
+  std::vector<TensileSample> samples;
+  for (double strain : {0.0, 1.8e-10}) {
+    TensileSample t;
+    t.strain = strain, t.stress = strain == 0.0 ? -1.4 : -6.3;
+    samples.push_back(t);
+  }
+  const ElasticFit two = fitElasticSlope(samples, 0.0, kElasticStrain);
+  EXPECT_EQ(two.samples, 2);
+  EXPECT_FALSE(two.fitted);
+  EXPECT_EQ(two.slope, 0.0);
+  TensileSample third;
+  third.strain = 0.003, third.stress = 0.5;  // 3 samples over 10 % of the 3 % window
+  samples.push_back(third);
+  EXPECT_FALSE(fitElasticSlope(samples, 0.0, kElasticStrain).fitted);
+  third.strain = 0.016;                       // over 53 %: fitted
+  samples.back() = third;
+  EXPECT_TRUE(fitElasticSlope(samples, 0.0, kElasticStrain).fitted);
 }
 
 TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
