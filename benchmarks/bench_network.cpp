@@ -58,6 +58,7 @@ struct NetworkBenchOptions {
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
   bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
   std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
+  std::vector<double> massScales;    // non-empty: the same for mass (density) scaling
   PullProtocol pull;                 // with inertiaScales: the stress-strain comparison
   std::string criticalStep = "gershgorin";  // [run] critical_step of the scaled runs
 };
@@ -392,12 +393,25 @@ Command makeBenchNetworkCommand() {
                        "rotational inertia scaling: step, throughput, ns/hour and energy error per scale, and exit")
         ->delimiter(',')
         ->check(CLI::Range(1.0, 1e4));
+    (*sub)->add_option("--mass-scales", opt->massScales,
+                       "mass (density) scaling on top of the scene's rotational_inertia_scale: the same table (or "
+                       "--pull curves) per scale, and exit")
+        ->delimiter(',')
+        ->check(CLI::Range(1.0, 1e4))
+        ->excludes("--inertia-scales")
+        ->excludes("--bond-spectrum");
     (*sub)->add_option("--critical-step", opt->criticalStep,
-                       "with --inertia-scales / --bond-spectrum: [run] critical_step of the scaled runs")
+                       "with --inertia-scales / --mass-scales / --bond-spectrum: [run] critical_step of the scaled runs")
         ->check(CLI::IsMember({"gershgorin", "gershgorin_body"}));
     (*sub)->add_flag("--pull", opt->pull.enabled,
                      "with --inertia-scales: the stress-strain curves instead of the table (pull at 1/ns to 30 % from "
                      "the scene, after --relax-ns if given; a repeat of the scene as given with a perturbed start)");
+    (*sub)->add_option("--pull-rate-per-ns", opt->pull.strainRate, "with --pull: the strain rate (default 1/ns)")
+        ->check(CLI::PositiveNumber);
+    (*sub)->add_option("--pull-final-strain", opt->pull.finalStrain, "with --pull: the final strain (default 0.3)")
+        ->check(CLI::PositiveNumber);
+    (*sub)->add_option("--pull-ramp-ns", opt->pull.ramp, "with --pull: the grips' velocity ramp (default 0.02 ns)")
+        ->check(CLI::PositiveNumber);
     (*sub)->add_flag("--pull-knobs-only", opt->pull.knobsOnly,
                      "with --pull: only the scaled runs, without the reference and its repeat (another process)");
     (*sub)->add_flag("--pull-repeat-only", opt->pull.repeatOnly, "with --pull: only the perturbed repeat of the scene");
@@ -439,15 +453,18 @@ Command makeBenchNetworkCommand() {
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
     if (opt->kernelCurve) return printKernelCurve(*opt);
-    if (opt->bondSpectrum || !opt->inertiaScales.empty()) {
+    if (opt->bondSpectrum || !opt->inertiaScales.empty() || !opt->massScales.empty()) {
       mdem::Scene s =
           opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       if (opt->coarsenRelaxed && !opt->coarsenTo.empty()) s = coarsenedFilm(s, opt->coarsenTo);
-      const std::vector<double> scales = opt->inertiaScales.empty() ? std::vector<double>{1.0} : opt->inertiaScales;
+      const bool mass = !opt->massScales.empty();
+      const std::vector<double> given = mass ? opt->massScales : opt->inertiaScales;
+      const std::vector<double> scales = given.empty() ? std::vector<double>{1.0} : given;
       const bool body = opt->criticalStep == "gershgorin_body";
       if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
-      return printInertiaScaleCurve(s, scales, body, opt->seconds, opt->threads, opt->pull);
+      return printInertiaScaleCurve(s, mass ? InertiaKnob::Mass : InertiaKnob::Rotational, scales, body, opt->seconds,
+                                    opt->threads, opt->pull);
     }
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =

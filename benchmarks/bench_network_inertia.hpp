@@ -1,7 +1,8 @@
 #pragma once
-// `mesochain-bench network --bond-spectrum` and `--inertia-scales 1,4,16`: what sets the mDEM time
-// step and what rotational inertia scaling ([run] rotational_inertia_scale, mdem/body.hpp) buys
-// and changes (docs/benchmarks.md, "What sets the mDEM time step").
+// `mesochain-bench network --bond-spectrum`, `--inertia-scales 1,4,16` and `--mass-scales 1,4,16`:
+// what sets the mDEM time step and what rotational inertia scaling or mass (density) scaling
+// ([run] rotational_inertia_scale, mass_scale; mdem/body.hpp) buys and changes
+// (docs/benchmarks.md, "What sets the mDEM time step" and "Mass scaling").
 #include <vector>
 
 #include "mdem/scene.hpp"
@@ -12,6 +13,10 @@ namespace mesochain::app {
 // system (mdem/bond_spectrum.hpp), the mode's kinetic-energy shares, and the scene's critical
 // step with its contacts and what limits it. Returns 0.
 int printBondSpectrum(const mdem::Scene& scene, const std::vector<double>& scales, bool bodyFrame);
+
+// Which inertia a scale multiplies: the moments alone, or mass and moments (on top of the
+// scene's own rotational_inertia_scale).
+enum class InertiaKnob { Rotational, Mass };
 
 struct PullProtocol {
   bool enabled = false;
@@ -29,7 +34,7 @@ struct PullProtocol {
 // energy error without damping at that scale's own step; with `pull` instead, the stress-strain curve of
 // the relax-and-pull protocol per scale, its RMS difference from the scene as given (scale 1), and
 // that of a repeat of it with a perturbed start (the run-to-run scatter). Returns 0.
-int printInertiaScaleCurve(const mdem::Scene& scene, const std::vector<double>& scales, bool bodyFrame, double seconds,
-                           int threads, const PullProtocol& pull);
+int printInertiaScaleCurve(const mdem::Scene& scene, InertiaKnob knob, const std::vector<double>& scales, bool bodyFrame,
+                           double seconds, int threads, const PullProtocol& pull);
 
 }  // namespace mesochain::app

@@ -43,11 +43,15 @@ void Bodies::setAngularVelocityWorld(int i, const Vec3& omega) {
   angularMomentumBody[i] = inertia[i].cwiseProduct(rotateInverse(orientation[i], omega));
 }
 
-void scaleRotationalInertia(Bodies& b, const std::vector<ElementType>& types, double scale) {
+void scaleInertia(Bodies& b, const std::vector<ElementType>& types, double massScale, double rotationalScale) {
   for (int i = 0; i < b.size(); ++i) {
-    const Vec3 inertia = scale * types[b.type[i]].principalInertia();
+    const ElementType& t = types[b.type[i]];
+    const double mass = massScale * t.mass;
+    const Vec3 inertia = (massScale * rotationalScale) * t.principalInertia();
+    if (b.mass[i] == mass && b.inertia[i] == inertia) continue;
     b.angularMomentumBody[i] = b.angularMomentumBody[i].cwiseQuotient(b.inertia[i]).cwiseProduct(inertia);
     b.inertia[i] = inertia;
+    b.mass[i] = mass;
   }
 }
 

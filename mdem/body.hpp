@@ -63,12 +63,14 @@ struct Bodies {
   void setAngularVelocityWorld(int i, const Vec3& omega);
 };
 
-// Rotational inertia scaling ([run] rotational_inertia_scale, docs/scene-file.md): every
-// element's principal moments become `scale` times those of its type (types[type[i]]), its mass
-// unchanged; the body angular momentum is rescaled so that the angular velocities stay. The
-// rotational vibrations slow by sqrt(scale), and with them the critical step they set
-// (O'Sullivan & Bray, Eng. Comput. 21, 278 (2004); a standard device of quasi-static DEM).
-// Idempotent: applying the same scale twice changes nothing.
-void scaleRotationalInertia(Bodies& bodies, const std::vector<ElementType>& types, double scale);
+// Inertia scaling ([run] mass_scale and rotational_inertia_scale, docs/scene-file.md): every
+// element's mass becomes massScale times its type's (types[type[i]]) and its principal moments
+// massScale * rotationalScale times the type's. Velocities and angular velocities are kept (the
+// body angular momentum is rescaled). Scaling every inertia by s slows every vibration by sqrt(s)
+// and lengthens the critical step by sqrt(s) (density scaling, Thornton, Geotechnique 50, 43
+// (2000)); scaling the moments alone slows the rotational vibrations only (O'Sullivan & Bray,
+// Eng. Comput. 21, 278 (2004)). Both are standard devices of quasi-static DEM. Idempotent, and
+// elements that already have the target inertia are left bit for bit as they are.
+void scaleInertia(Bodies& bodies, const std::vector<ElementType>& types, double massScale, double rotationalScale);
 
 }  // namespace mesochain::mdem

@@ -71,6 +71,9 @@ std::uint64_t sceneFingerprint(const Scene& s) {
   // Only when set, so that the checkpoints of unscaled runs keep their fingerprint.
   if (s.run.rotationalInertiaScale != 1.0) hashValue(h, s.run.rotationalInertiaScale);
   if (s.run.bodyFrameCriticalStep) hashValue(h, s.run.bodyFrameCriticalStep);
+  if (s.run.massScale != 1.0) hashValue(h, s.run.massScale);
+  for (const StageSpec& st : s.stages)
+    if (st.massScale > 0.0) hashValue(h, st.massScale);
   for (const ElementType& t : s.elementTypes)
     for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
   const Bodies& b = s.bodies;

@@ -112,7 +112,8 @@ double filmThickness(const Scene& scene, const Bodies& b) {
 CompressionRecorder::CompressionRecorder(const Scene& scene, const std::string& csvPath, const std::string& cyclesPath,
                                          std::int64_t resumeAt, std::int64_t cyclesResumeAt)
     : scene_(scene), area_(scene.compression.area) {
-  for (double m : scene.bodies.mass) mass_ += m;
+  // The true mass (the bodies carry the scaled one under mass_scale): densities are physical.
+  for (int t : scene.bodies.type) mass_ += scene.elementTypes[t].mass;
   if (!csvPath.empty()) csv_ = std::make_unique<AppendFile>(csvPath, resumeAt);
   if (!cyclesPath.empty()) {
     cyclesCsv_ = std::make_unique<AppendFile>(cyclesPath, cyclesResumeAt);

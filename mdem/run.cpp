@@ -62,6 +62,7 @@ Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, 
   Scene s = base;
   s.bodies = bodies;
   s.effects.insert(s.effects.end(), stage.addEffects.begin(), stage.addEffects.end());
+  if (stage.massScale > 0.0) s.run.massScale = stage.massScale;
   if (!implicit) {
     s.tensile = stage.tensile;
     if (s.tensile.enabled) {

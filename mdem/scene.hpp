@@ -32,8 +32,12 @@ struct RunControl {
   double timeStep = 0.0;              // ns
   double timeStepFraction = 0.0;      // > 0: time step = this fraction of the critical one
   // Moments of inertia of every element times this (mass unchanged; body.hpp,
-  // scaleRotationalInertia): slows the rotational vibrations, lengthens their critical step.
+  // scaleInertia): slows the rotational vibrations, lengthens their critical step.
   double rotationalInertiaScale = 1.0;
+  // Mass and moments of inertia of every element times this (density scaling; body.hpp,
+  // scaleInertia): slows every vibration by sqrt(massScale), lengthens the critical step as much.
+  // A stage may set its own (StageSpec::massScale).
+  double massScale = 1.0;
   // Frame of the translations in the critical step's Gershgorin bound (stability.hpp): false
   // world axes ("gershgorin", the default), true each element's body axes ("gershgorin_body").
   bool bodyFrameCriticalStep = false;
@@ -126,6 +130,7 @@ struct StageSpec {
   long checkEvery = 100;
   long minimumSteps = 0;
   std::vector<std::string> addEffects;  // named for this stage only, on top of `effects`
+  double massScale = 0.0;               // > 0: the stage's mass_scale in place of [run]'s
   std::string energiesCsv;              // the stage's own time series ("" = none)
   long energiesEvery = 100;
   std::string plotPng;

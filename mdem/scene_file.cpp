@@ -224,6 +224,13 @@ void readBoundary(const TomlTable& root, Scene& s) {
 }
 
 // [run] outer_step_ratio / outer_step_fraction / outer_effects (multiple time stepping).
+// rotational_inertia_scale, mass_scale: a factor in [1, 10000] (body.hpp, scaleInertia).
+double inertiaFactor(const TomlTable& t, const std::string& key) {
+  const double v = t.positive(key);
+  if (v < 1.0 || v > 1e4) t.fail(key, std::to_string(v), "a factor in [1, 10000]");
+  return v;
+}
+
 void readOuterStep(const TomlTable& run, Scene& s) {
   if (run.isString("outer_step_ratio")) {
     const std::string v = run.string("outer_step_ratio");
@@ -254,7 +261,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   const TomlTable run = root.requireTable("run");
   run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "duration_ns", "stop_kinetic_energy_zJ",
                  "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects",
-                 "rotational_inertia_scale", "critical_step"});
+                 "rotational_inertia_scale", "mass_scale", "critical_step"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
     run.fail("time_step_ns", run.has("time_step_ns") ? "both time_step_ns and time_step_fraction" : "neither",
              "exactly one of time_step_ns, time_step_fraction");
@@ -271,11 +278,8 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
       run.fail("critical_step", "\"" + v + "\"", "\"gershgorin\" (world axes) or \"gershgorin_body\" (body axes)");
     s.run.bodyFrameCriticalStep = v == "gershgorin_body";
   }
-  if (run.has("rotational_inertia_scale")) {
-    s.run.rotationalInertiaScale = run.positive("rotational_inertia_scale");
-    if (s.run.rotationalInertiaScale < 1.0 || s.run.rotationalInertiaScale > 1e4)
-      run.fail("rotational_inertia_scale", std::to_string(s.run.rotationalInertiaScale), "a factor in [1, 10000]");
-  }
+  if (run.has("rotational_inertia_scale")) s.run.rotationalInertiaScale = inertiaFactor(run, "rotational_inertia_scale");
+  if (run.has("mass_scale")) s.run.massScale = inertiaFactor(run, "mass_scale");
   if (!root.has("stages")) {
     if (run.has("steps") && run.has("duration_ns"))
       run.fail("duration_ns", "both steps and duration_ns", "exactly one of steps, duration_ns (the run's length)");
@@ -369,7 +373,7 @@ void readStages(const TomlTable& root, Scene& s) {
     root.fail("output", "energies_csv / plot_png in [output] beside [[stages]]", "each stage's own energies_csv / plot_png");
   for (const TomlTable& t : root.tables("stages")) {
     t.allowOnly({"name", "kind", "steps", "duration_ns", "stop_kinetic_energy_zJ", "check_every", "minimum_steps", "add_effects",
-                 "energies_csv", "energies_every", "plot_png", "tensile", "compression"});
+                 "mass_scale", "energies_csv", "energies_every", "plot_png", "tensile", "compression"});
     StageSpec st;
     st.name = t.string("name");
     if (st.name.empty()) t.fail("name", "an empty name", "a stage name (used in file names and messages)");
@@ -394,6 +398,7 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.checkEvery < 1) t.fail("check_every", std::to_string(st.checkEvery), "at least 1");
     st.minimumSteps = t.integerOr("minimum_steps", 0);
     if (t.has("add_effects")) st.addEffects = t.strings("add_effects");
+    if (t.has("mass_scale")) st.massScale = inertiaFactor(t, "mass_scale");
     for (const std::string& e : st.addEffects) {
       if (std::find(s.effects.begin(), s.effects.end(), e) != s.effects.end())
         t.fail("add_effects", "\"" + e + "\", already in effects", "effects named for this stage only");

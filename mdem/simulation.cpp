@@ -53,7 +53,8 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
       h_(scene.run.timeStep),
       steps_(startStep),
       cycleStart_(startStep) {
-  if (scene.run.rotationalInertiaScale != 1.0) scaleRotationalInertia(state_.bodies, scene.elementTypes, scene.run.rotationalInertiaScale);
+  // Always: a stage may return to unscaled inertia after a scaled one (the bodies carry theirs).
+  scaleInertia(state_.bodies, scene.elementTypes, scene.run.massScale, scene.run.rotationalInertiaScale);
   const GershgorinFrame frame = scene.run.bodyFrameCriticalStep ? GershgorinFrame::Body : GershgorinFrame::World;
   std::vector<char> outer = outerGroup(scene, effects_);
   bool split = std::find(outer.begin(), outer.end(), 1) != outer.end();

@@ -34,7 +34,7 @@ FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o
     const ElementType& t = scene.elementTypes[b.type[i]];
     const double r = t.contactRadius();
     rMax = std::max(rMax, r);
-    f.mass += b.mass[i];
+    f.mass += t.mass;  // the true mass, also under [run] mass_scale
     volume += units::kPi * (r + o.vdwShell) * (r + o.vdwShell) * t.length;
     const double z = b.position[i].z();
     zMin = std::min(zMin, z), zMax = std::max(zMax, z), zSum += z;

@@ -161,6 +161,13 @@ TEST(MdemDeposition, FilmReportMatchesAnIndependentRecount) {
   const double vdw = units::kPi * std::pow(kTubeRadius + 0.17, 2) * kSegmentLength * s.bodies.size();
   EXPECT_NEAR(f.porosity, 1.0 - vdw / (area * t), 1e-12);
   EXPECT_NEAR(f.arealDensity, mass / area * 100.0, 1e-12 * f.arealDensity);
+  // Bodies that carry scaled masses ([run] mass_scale, as a stage's end state does) report the
+  // same, true, densities.
+  Scene heavy = s;
+  scaleInertia(heavy.bodies, heavy.elementTypes, 9.0, 1.0);
+  ASSERT_EQ(heavy.bodies.mass[0], 9.0 * s.bodies.mass[0]);
+  EXPECT_EQ(filmStatistics(heavy).density, f.density);
+  EXPECT_EQ(filmStatistics(heavy).arealDensity, f.arealDensity);
   // Contacts by brute force over all pairs (minimum image, same tube within 3 excluded).
   const FilamentTopology topo = buildTopology(s.bodies.size(), s.bonds, 3, {});
   long pairs = 0;

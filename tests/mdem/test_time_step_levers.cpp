@@ -44,7 +44,7 @@ Scene twoObliqueFilaments() {
 TEST(MdemTimeStepLevers, BondSpectrumMatchesDenseEigenfrequenciesAndLiesBelowBothBounds) {
   for (double scale : {1.0, 16.0}) {
     Scene s = twoObliqueFilaments();
-    scaleRotationalInertia(s.bodies, s.elementTypes, scale);
+    scaleInertia(s.bodies, s.elementTypes, 1.0, scale);
     const KinematicMap kin(s.boundary, s.bodies.size());
     const BondSpectrum b = bondSpectrum(s.bodies, s.bonds, kin);
     const Eigen::VectorXd w = eigenfrequencies(s.bodies, s.bonds, std::vector<bool>(6 * s.bodies.size(), true));
@@ -71,7 +71,7 @@ TEST(MdemTimeStepLevers, StraightChainAxialRowsAreExactInBodyAxes) {
   // k_n c_x^2 + k_s (1 - c_x^2) + (k_n - k_s) c_x (c_y + c_z) = 1.2 k_n (k_s = 0.4 k_n) against
   // k_n in body axes: omega 1.095x.
   Scene s = filament(40, Vec3::Zero(), Vec3(2.0, 1.0, 1.0).normalized(), Vec3::UnitZ());
-  scaleRotationalInertia(s.bodies, s.elementTypes, 1e4);
+  scaleInertia(s.bodies, s.elementTypes, 1.0, 1e4);
   const KinematicMap kin(s.boundary, s.bodies.size());
   const double kn = kYoung / kL;
   const double exact = std::sqrt(4.0 * kn * area() / kMass);
@@ -130,7 +130,7 @@ TEST(MdemTimeStepLevers, ScalingKeepsAngularVelocitiesAndScalesRotationalEnergy)
   EXPECT_LT((sim.bodies().angularVelocityWorld(1) - Vec3(0.3, -0.2, 0.5)).norm(), 1e-12);
   // Applying the scale to scaled bodies (a later stage) changes nothing.
   Bodies again = sim.bodies();
-  scaleRotationalInertia(again, s.elementTypes, 4.0);
+  scaleInertia(again, s.elementTypes, 1.0, 4.0);
   EXPECT_EQ(again.inertia[1], sim.bodies().inertia[1]);
   EXPECT_EQ(again.angularMomentumBody[1], sim.bodies().angularMomentumBody[1]);
 }
