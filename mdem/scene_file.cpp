@@ -223,7 +223,6 @@ void readBoundary(const TomlTable& root, Scene& s) {
                        "at most one [[fixed]] or [[prescribed]] entry per element");
 }
 
-// [run] outer_step_ratio / outer_step_fraction / outer_effects (multiple time stepping).
 // rotational_inertia_scale, mass_scale: a factor in [1, 10000] (body.hpp, scaleInertia).
 double inertiaFactor(const TomlTable& t, const std::string& key) {
   const double v = t.positive(key);
@@ -231,6 +230,7 @@ double inertiaFactor(const TomlTable& t, const std::string& key) {
   return v;
 }
 
+// [run] outer_step_ratio / outer_step_fraction / outer_effects (multiple time stepping).
 void readOuterStep(const TomlTable& run, Scene& s) {
   if (run.isString("outer_step_ratio")) {
     const std::string v = run.string("outer_step_ratio");
