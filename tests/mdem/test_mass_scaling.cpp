@@ -7,30 +7,24 @@
 //  * a quasi-static pull keeps the closed-form slope Y A_tube / A_film, and the grips' work still
 //    equals the change of the (scaled) total energy;
 //  * a stage sets its own scale and the next stage returns to the unscaled inertia, velocities
-//    kept; the scene file reads the keys and refuses bad values; a checkpoint of another scale is
-//    refused.
+//    kept. (The keys and the checkpoint's refusal of another scale: test_time_step_levers.cpp.)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "chain_fixture.hpp"
 #include "contact_fixture.hpp"
-#include "tests/support/expect_input_error.hpp"
 
-#include "mdem/checkpoint.hpp"
 #include "mdem/run.hpp"
-#include "mdem/scene_file.hpp"
 #include "mdem/tensile.hpp"
 
 namespace mesochain::mdem {
 namespace {
 
 using namespace testing;
-using mesochain::testing::expectInputError;
 
 // An oblique chain of 8 bricks, bonded at rest and then displaced and turned at random (at rest:
 // the motion is set by the bonds alone).
@@ -177,59 +171,6 @@ TEST(MdemMassScaling, AStageSetsItsOwnScaleAndTheNextReturnsToTheUnscaledInertia
               1e-12 * (1.0 + a.bodies().angularVelocityWorld(i).norm()));
   }
   std::filesystem::remove_all(dir);
-}
-
-TEST(MdemMassScaling, SceneFileReadsTheKeysAndCheckpointsOfAnotherScaleAreRefused) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("mesochain-mass-file-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "model.toml") << "format = 1\n[[element_types]]\nname = \"brick\"\nshape = \"brick\"\nthickness_nm = 0.8\n"
-                                       "width_nm = 2.4\nlength_nm = 2.0\nmass_ag = 0.01\n[[bond_types]]\nname = \"b\"\n"
-                                       "young_modulus_MPa = 1.0e6\nshear_modulus_MPa = 0.4e6\n";
-  auto scene = [&](const std::string& run, const std::string& stages) {
-    const std::string path = (dir / "scene.toml").string();
-    std::ofstream(path) << "format = 1\nmodel = \"model.toml\"\neffects = [\"bonds\"]\n[[filaments]]\n"
-                           "element_type = \"brick\"\nbond_type = \"b\"\ncount = 4\n[run]\ntime_step_fraction = 0.5\n"
-                        << run << stages;
-    return loadScene(path);
-  };
-  EXPECT_EQ(scene("steps = 10\n", "").run.massScale, 1.0);
-  EXPECT_EQ(scene("steps = 10\nmass_scale = 25.0\n", "").run.massScale, 25.0);
-  const Scene staged = scene("mass_scale = 4.0\n", "[[stages]]\nname = \"a\"\nsteps = 5\nmass_scale = 100.0\n"
-                                                  "[[stages]]\nname = \"b\"\nsteps = 5\n");
-  ASSERT_EQ(staged.stages.size(), 2u);
-  EXPECT_EQ(staged.run.massScale, 4.0);
-  EXPECT_EQ(staged.stages[0].massScale, 100.0);
-  EXPECT_EQ(staged.stages[1].massScale, 0.0);  // the run's
-  expectInputError([&] { scene("steps = 10\nmass_scale = 0.5\n", ""); }, {"mass_scale", "0.5", "[1, 10000]"});
-  expectInputError([&] { scene("", "[[stages]]\nname = \"a\"\nsteps = 5\nmass_scale = 2e4\n"); },
-                   {"mass_scale", "20000", "[1, 10000]"});
-  std::filesystem::remove_all(dir);
-
-  const std::string path = (std::filesystem::temp_directory_path() / ("mesochain-mass-" + std::to_string(::getpid()) + ".ckpt")).string();
-  Scene s = filament(4);
-  s.run.timeStepFraction = 0.5;
-  s.run.massScale = 9.0;
-  Simulation sim(s);
-  sim.run(10);
-  writeCheckpoint(path, s, sim, {}, {});
-  {
-    Simulation again(s);
-    CheckpointFile(path, s).restore(again);
-    EXPECT_EQ(again.bodies().mass, sim.bodies().mass);
-    EXPECT_EQ(again.bodies().velocity, sim.bodies().velocity);
-  }
-  Scene other = s;
-  other.run.massScale = 1.0;
-  expectInputError([&] { CheckpointFile(path, other); }, {"another scene"});
-  Scene stage = s;
-  StageSpec st;
-  st.name = "a", st.steps = 5, st.massScale = 4.0;
-  stage.stages = {st};
-  Scene stage2 = stage;
-  stage2.stages[0].massScale = 16.0;
-  writeCheckpoint(path, stage, sim, {}, {});
-  expectInputError([&] { CheckpointFile(path, stage2); }, {"another scene"});
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -6,8 +6,9 @@
 //  * a twisted element with scaled inertia vibrates at the analytic torsion frequency over
 //    sqrt(scale); scaling keeps the angular velocities and puts the scaled inertia into the
 //    rotational kinetic energy; energy is conserved with scaled inertia;
-//  * the scene file reads both keys and refuses bad values; a checkpoint of another scale or
-//    frame is refused, one of the same is accepted.
+//  * the scene file reads the keys (mass_scale too, in [run] and per stage) and refuses bad
+//    values; a checkpoint of another scale (rotational, mass, a stage's mass) or frame is refused,
+//    one of the same is accepted.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -184,12 +185,12 @@ TEST(MdemTimeStepLevers, SceneFileReadsTheKeysAndRefusesBadValues) {
   std::ofstream(model) << "format = 1\n[[element_types]]\nname = \"brick\"\nshape = \"brick\"\nthickness_nm = 0.8\n"
                           "width_nm = 2.4\nlength_nm = 2.0\nmass_ag = 0.01\n[[bond_types]]\nname = \"b\"\n"
                           "young_modulus_MPa = 1.0e6\nshear_modulus_MPa = 0.4e6\n";
-  auto scene = [&](const std::string& run) {
+  // [run] with `run` after its time step; `stages` (none: a run of 10 steps).
+  auto scene = [&](const std::string& run, const std::string& stages = "") {
     const std::string path = (dir / "scene.toml").string();
     std::ofstream(path) << "format = 1\nmodel = \"model.toml\"\neffects = [\"bonds\"]\n[[filaments]]\n"
                            "element_type = \"brick\"\nbond_type = \"b\"\ncount = 4\n[run]\ntime_step_fraction = 0.5\n"
-                           "steps = 10\n"
-                        << run;
+                        << (stages.empty() ? "steps = 10\n" : "") << run << stages;
     return loadScene(path);
   };
   const Scene plain = scene("");
@@ -200,6 +201,18 @@ TEST(MdemTimeStepLevers, SceneFileReadsTheKeysAndRefusesBadValues) {
   EXPECT_TRUE(set.run.bodyFrameCriticalStep);
   expectInputError([&] { scene("rotational_inertia_scale = 0.5\n"); }, {"rotational_inertia_scale", "0.5", "[1, 10000]"});
   expectInputError([&] { scene("critical_step = \"power\"\n"); }, {"critical_step", "power", "gershgorin_body"});
+  // mass_scale, in [run] and per stage (test_mass_scaling.cpp).
+  EXPECT_EQ(plain.run.massScale, 1.0);
+  EXPECT_EQ(scene("mass_scale = 25.0\n").run.massScale, 25.0);
+  const Scene staged = scene("mass_scale = 4.0\n", "[[stages]]\nname = \"a\"\nsteps = 5\nmass_scale = 100.0\n"
+                                                  "[[stages]]\nname = \"b\"\nsteps = 5\n");
+  ASSERT_EQ(staged.stages.size(), 2u);
+  EXPECT_EQ(staged.run.massScale, 4.0);
+  EXPECT_EQ(staged.stages[0].massScale, 100.0);
+  EXPECT_EQ(staged.stages[1].massScale, 0.0);  // the run's
+  expectInputError([&] { scene("mass_scale = 0.5\n"); }, {"mass_scale", "0.5", "[1, 10000]"});
+  expectInputError([&] { scene("", "[[stages]]\nname = \"a\"\nsteps = 5\nmass_scale = 2e4\n"); },
+                   {"mass_scale", "20000", "[1, 10000]"});
   std::filesystem::remove_all(dir);
 }
 
@@ -209,13 +222,19 @@ TEST(MdemTimeStepLevers, CheckpointOfAnotherScaleOrFrameIsRefused) {
   Scene s = filament(4);
   s.run.timeStepFraction = 0.5;
   s.run.rotationalInertiaScale = 4.0;
+  s.run.massScale = 9.0;
+  StageSpec stage;
+  stage.name = "a", stage.steps = 5, stage.massScale = 4.0;
+  s.stages = {stage};
   Simulation sim(s);
   sim.run(10);
   writeCheckpoint(path, s, sim, {}, {});
   {
     Simulation again(s);
-    CheckpointFile(path, s).restore(again);  // the same scale: accepted
+    CheckpointFile(path, s).restore(again);  // the same scales: accepted
     EXPECT_EQ(again.bodies().angularMomentumBody, sim.bodies().angularMomentumBody);
+    EXPECT_EQ(again.bodies().mass, sim.bodies().mass);
+    EXPECT_EQ(again.bodies().velocity, sim.bodies().velocity);
   }
   Scene other = s;
   other.run.rotationalInertiaScale = 1.0;
@@ -225,6 +244,12 @@ TEST(MdemTimeStepLevers, CheckpointOfAnotherScaleOrFrameIsRefused) {
   Scene frame = s;
   frame.run.bodyFrameCriticalStep = true;
   expectInputError([&] { CheckpointFile(path, frame); }, {"another scene"});
+  Scene mass = s;
+  mass.run.massScale = 1.0;
+  expectInputError([&] { CheckpointFile(path, mass); }, {"another scene"});
+  mass = s;
+  mass.stages[0].massScale = 16.0;
+  expectInputError([&] { CheckpointFile(path, mass); }, {"another scene"});
   std::filesystem::remove(path);
 }
 
