@@ -7,8 +7,9 @@
 //
 // One force evaluation at time t (positions and velocities of time t) runs, for the effects in
 // their order:
-//   prepare(t)                  serial, once (effects with hasPrepare()): e.g. refresh a
-//                               neighbour list;
+//   prepare(t)                  serial, once (effects with hasPrepare()), on the state the
+//                               items then see: e.g. refresh a neighbour list, or form once per
+//                               element what every item of the element reads (a contact's axes);
 //   computeItems(t, lo, hi)     per item (bond, contact pair) into the effect's own buffer,
 //                               items split between threads; an item writes only its own slot;
 //   gather(t, lo, hi, F, M)     per element: adds the element's share of every item to the

@@ -11,19 +11,46 @@
 // (1 below fullGap, 0 beyond cutoffGap). Forces are equal and opposite and act at one point, so
 // linear and angular momentum are conserved; the power is -gamma lambda s |v_rel|^2 - ... <= 0.
 // For aligned tubes in contact the friction force per unit length is exactly gamma v.
+#include <algorithm>
+#include <cmath>
+
 #include "mdem/contacts/contact_spec.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 
 namespace mesochain::mdem {
 
 // Closest points of two segments: parameters sa in [-la, la], sb in [-lb, lb].
-void closestPoints(const Segment& a, const Segment& b, double* sa, double* sb);
+inline void closestPoints(const Segment& a, const Segment& b, double* sa, double* sb) {
+  const Vec3 r = a.centre - b.centre;
+  const double c = a.axis.dot(b.axis), e = a.axis.dot(r), f = b.axis.dot(r);
+  const double la = a.halfLength, lb = b.halfLength;
+  double s;
+  if (1.0 - c * c > 1e-10) {
+    s = std::clamp((c * f - e) / (1.0 - c * c), -la, la);
+  } else {
+    // Parallel: the middle of the overlap of b's projection on a's axis with [-la, la].
+    const double p0 = -e - lb, p1 = -e + lb;
+    s = std::clamp(0.5 * (std::max(p0, -la) + std::min(p1, la)), -la, la);
+  }
+  double u = std::clamp(f + s * c, -lb, lb);
+  s = std::clamp(u * c - e, -la, la);
+  u = std::clamp(f + s * c, -lb, lb);
+  *sa = s, *sb = u;
+}
 // Wall-to-wall gap of two tubes of radii ra, rb along the segments: the distance of the closest
 // points of the axes minus both radii (negative: the walls interpenetrate).
 double wallGap(const Segment& a, const Segment& b, double ra, double rb);
 
 // Contact length lambda and weight s (see above).
-double contactLength(const Segment& a, const Segment& b, double radiusA, double radiusB);
+inline double contactLength(const Segment& a, const Segment& b, double ra, double rb) {
+  auto overlap = [](const Segment& p, const Segment& q) {
+    // Projection of q on p's axis, overlapped with [-lp, lp].
+    const double m = (q.centre - p.centre).dot(p.axis), h = q.halfLength * std::abs(q.axis.dot(p.axis));
+    return std::max(0.0, std::min(m + h, p.halfLength) - std::max(m - h, -p.halfLength));
+  };
+  const double sine = a.axis.cross(b.axis).norm();
+  return 0.5 * (overlap(a, b) + overlap(b, a)) + (ra + rb) * sine;
+}
 
 // Where and how strongly the dashpot acts: the contact point c and lambda s (zero beyond the
 // cut-off gap: then the pair has no dashpot and its velocities need not be formed).
@@ -31,11 +58,85 @@ struct DashpotContact {
   Vec3 point = Vec3::Zero();
   double weightedLength = 0.0;  // lambda s, nm
 };
-DashpotContact dashpotContact(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double radiusA,
-                              double radiusB);
+inline DashpotContact dashpotContact(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double ra,
+                              double rb) {
+  DashpotContact k;
+  double sa, sb;
+  closestPoints(a, b, &sa, &sb);
+  const Vec3 pa = a.centre + sa * a.axis, pb = b.centre + sb * b.axis;
+  const double gap = (pa - pb).norm() - ra - rb;
+  if (gap >= spec.cutoffGap) return k;
+  double weight = 1.0;
+  if (gap > spec.fullGap) {
+    const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
+    weight = 1.0 - x * x * (3.0 - 2.0 * x);
+  }
+  k.weightedLength = std::max(0.0, weight * contactLength(a, b, ra, rb));
+  k.point = 0.5 * (pa + pb);
+  return k;
+}
 // The forces and torques of a contact with weightedLength > 0.
-ContactPairResult dashpotForces(const ContactDampingSpec& spec, const DashpotContact& contact, const Segment& a,
-                                const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb);
+inline ContactPairResult dashpotForces(const ContactDampingSpec& spec, const DashpotContact& k, const Segment& a,
+                                const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb) {
+  ContactPairResult r;
+  const double lw = k.weightedLength;
+  const Vec3& c = k.point;
+  const Vec3 vrel = (vb + wb.cross(c - b.centre)) - (va + wa.cross(c - a.centre));
+  r.forceA = spec.translational * lw * vrel;
+  r.forceB = -r.forceA;
+  const Vec3 mr = spec.rotational * lw * (wb - wa);
+  r.torqueA = (c - a.centre).cross(r.forceA) + mr;
+  r.torqueB = (c - b.centre).cross(r.forceB) - mr;
+  return r;
+}
+
+// One listed pair in one pass, the kernel of the contact_damping effect: dashpotContact then
+// dashpotForces, with the closest points' dot products reused by the contact length (a's view
+// of b's centre is -e, b's of a's is f, |cos| is |c|: the same products in the same order). The
+// operations are those of the two functions, so the results are the same bits (test
+// MdemContactDashpot.OnePassKernelEqualsTheTwoStepsBitForBit). Returns false, leaving `out`,
+// when the pair has no dashpot (wall gap at or beyond the cut-off).
+inline bool dashpotPair(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double ra, double rb,
+                        const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb, ContactPairResult* out) {
+  const Vec3 r = a.centre - b.centre;
+  const double c = a.axis.dot(b.axis), e = a.axis.dot(r), f = b.axis.dot(r);
+  const double la = a.halfLength, lb = b.halfLength;
+  double s;  // closestPoints
+  if (1.0 - c * c > 1e-10) {
+    s = std::clamp((c * f - e) / (1.0 - c * c), -la, la);
+  } else {
+    const double p0 = -e - lb, p1 = -e + lb;
+    s = std::clamp(0.5 * (std::max(p0, -la) + std::min(p1, la)), -la, la);
+  }
+  double u = std::clamp(f + s * c, -lb, lb);
+  s = std::clamp(u * c - e, -la, la);
+  u = std::clamp(f + s * c, -lb, lb);
+  const Vec3 pa = a.centre + s * a.axis, pb = b.centre + u * b.axis;
+  const double gap = (pa - pb).norm() - ra - rb;
+  if (gap >= spec.cutoffGap) return false;
+  double weight = 1.0;
+  if (gap > spec.fullGap) {
+    const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
+    weight = 1.0 - x * x * (3.0 - 2.0 * x);
+  }
+  const double cosine = std::abs(c);  // contactLength
+  const double ha = lb * cosine, hb = la * cosine;
+  const double overlapA = std::max(0.0, std::min(-e + ha, la) - std::max(-e - ha, -la));
+  const double overlapB = std::max(0.0, std::min(f + hb, lb) - std::max(f - hb, -lb));
+  const double sine = a.axis.cross(b.axis).norm();
+  const double lw = std::max(0.0, weight * (0.5 * (overlapA + overlapB) + (ra + rb) * sine));
+  if (lw <= 0.0) return false;
+  const Vec3 point = 0.5 * (pa + pb);  // dashpotForces
+  const Vec3 vrel = (vb + wb.cross(point - b.centre)) - (va + wa.cross(point - a.centre));
+  out->forceA = spec.translational * lw * vrel;
+  out->forceB = -out->forceA;
+  const Vec3 mr = spec.rotational * lw * (wb - wa);
+  out->torqueA = (point - a.centre).cross(out->forceA) + mr;
+  out->torqueB = (point - b.centre).cross(out->forceB) - mr;
+  out->energy = 0.0;
+  return true;
+}
+
 
 // Both in one call.
 ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,

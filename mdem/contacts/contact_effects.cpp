@@ -68,6 +68,14 @@ void gatherPairs(const NeighbourList& list, const std::vector<ContactPairResult>
   }
 }
 
+// Every element's axis (body z in the world frame), in parallel when there are many.
+void elementAxes(const Bodies& b, std::vector<Vec3>& axes) {
+  const int n = b.size();
+  axes.resize(n);
+#pragma omp parallel for schedule(static) if (n > 2048)
+  for (int i = 0; i < n; ++i) axes[i] = rotate(b.orientation[i], Vec3::UnitZ());
+}
+
 // The neighbourhood the contact effects of one scene share, with the range of those named; the
 // first effect that asks for it owns it (saves it in checkpoints).
 std::shared_ptr<ContactNeighbourhood> sharedNeighbourhood(EffectBuild& b, bool* owner) {
@@ -221,14 +229,15 @@ const TubePairPotential* VdwContactEffect::potential(int a, int b) const {
   return types_[std::min(a, b) * typeCount_ + std::max(a, b)].potential.get();
 }
 
-ContactPairResult VdwContactEffect::evaluatePair(const Bodies& b, int i, int j) const {
+ContactPairResult VdwContactEffect::evaluatePair(const Bodies& b, int i, int j, const Vec3* axes) const {
   const TypePair& tp = types_[std::min(b.type[i], b.type[j]) * typeCount_ + std::max(b.type[i], b.type[j])];
   // Quadrature side: the element of the lower filament (then the lower index), so that a tube
   // sliding along another is always integrated the same way (no corrugation).
   const FilamentTopology& topo = nb_->topology();
   const bool iOuter = topo.filament[i] != topo.filament[j] ? topo.filament[i] < topo.filament[j] : i < j;
   const int o = iOuter ? i : j, in = iOuter ? j : i;
-  const Segment so = nb_->segment(b, o), si = nb_->imageNear(b, in, so.centre);
+  const Segment so = axes ? nb_->segment(b, o, axes[o]) : nb_->segment(b, o);
+  const Segment si = axes ? nb_->imageNear(b, in, axes[in], so.centre) : nb_->imageNear(b, in, so.centre);
   ContactPairResult r =
       face_ ? face_->evaluate(brickFace(so.centre, b.orientation[o], width_[b.type[o]], length_[b.type[o]]),
                               brickFace(si.centre, b.orientation[in], width_[b.type[in]], length_[b.type[in]]))
@@ -241,11 +250,12 @@ ContactPairResult VdwContactEffect::evaluatePair(const Bodies& b, int i, int j) 
 void VdwContactEffect::prepare(const State& state, double) {
   nb_->update(state.bodies);  // (timed by dem --profile as this effect's prepare)
   results_.resize(nb_->list().pairs().size());
+  elementAxes(state.bodies, axes_);
 }
 
 void VdwContactEffect::computeItems(const State& state, double, int lo, int hi) {
   const auto& pairs = nb_->list().pairs();
-  for (int p = lo; p < hi; ++p) results_[p] = evaluatePair(state.bodies, pairs[p].first, pairs[p].second);
+  for (int p = lo; p < hi; ++p) results_[p] = evaluatePair(state.bodies, pairs[p].first, pairs[p].second, axes_.data());
 }
 
 void VdwContactEffect::gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const {
@@ -310,6 +320,14 @@ void ContactDampingEffect::prepare(const State& state, double) {
   if (refreshesList_) nb_->update(state.bodies);
   results_.resize(nb_->list().pairs().size());
   power_.resize(results_.size());
+  const Bodies& b = state.bodies;
+  const int n = b.size();
+  axes_.resize(n), angularVelocity_.resize(n);
+#pragma omp parallel for schedule(static) if (n > 2048)
+  for (int i = 0; i < n; ++i) {
+    axes_[i] = rotate(b.orientation[i], Vec3::UnitZ());
+    angularVelocity_[i] = b.angularVelocityWorld(i);
+  }
 }
 
 void ContactDampingEffect::computeItems(const State& state, double, int lo, int hi) {
@@ -317,15 +335,16 @@ void ContactDampingEffect::computeItems(const State& state, double, int lo, int 
   const auto& pairs = nb_->list().pairs();
   for (int p = lo; p < hi; ++p) {
     const int i = pairs[p].first, j = pairs[p].second;
-    const Segment a = nb_->segment(s, i), b = nb_->imageNear(s, j, a.centre);
-    const DashpotContact k = dashpotContact(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]));
-    if (k.weightedLength <= 0.0) {  // listed but beyond the cut-off: no velocities needed
-      results_[p] = ContactPairResult{};
+    const Segment a = nb_->segment(s, i, axes_[i]), b = nb_->imageNear(s, j, axes_[j], a.centre);
+    const Vec3& wi = angularVelocity_[i];
+    const Vec3& wj = angularVelocity_[j];
+    ContactPairResult& r = results_[p];
+    if (!dashpotPair(spec_, a, b, nb_->radius(s.type[i]), nb_->radius(s.type[j]), s.velocity[i], wi, s.velocity[j], wj,
+                     &r)) {  // listed but beyond the cut-off
+      r = ContactPairResult{};
       power_[p] = 0.0;
       continue;
     }
-    const Vec3 wi = s.angularVelocityWorld(i), wj = s.angularVelocityWorld(j);
-    const ContactPairResult& r = results_[p] = dashpotForces(spec_, k, a, b, s.velocity[i], wi, s.velocity[j], wj);
     power_[p] = -(r.forceA.dot(s.velocity[i]) + r.torqueA.dot(wi) + r.forceB.dot(s.velocity[j]) + r.torqueB.dot(wj));
   }
 }

@@ -42,6 +42,15 @@ class ContactNeighbourhood {
     s.centre = near + periodicity_.minimumImage(s.centre - near);
     return s;
   }
+  // The same two with the axis given (an effect's per-step copy of every element's axis,
+  // axesOf(): the same bits as segment()'s rotation, formed once per element instead of once
+  // per pair).
+  Segment segment(const Bodies& b, int i, const Vec3& axis) const {
+    return {b.position[i], axis, halfLength_[b.type[i]]};
+  }
+  Segment imageNear(const Bodies& b, int j, const Vec3& axis, const Vec3& near) const {
+    return {near + periodicity_.minimumImage(b.position[j] - near), axis, halfLength_[b.type[j]]};
+  }
   // The list's state (pairs and the positions it was built at), so that a resumed run rebuilds
   // at the same steps as an uninterrupted one.
   void saveList(BinaryWriter& out) const { list_.save(out); }
@@ -59,7 +68,8 @@ class VdwContactEffect : public Effect {
   VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNeighbourhood> neighbourhood, bool ownsNeighbourhood);
   std::string name() const override { return "vdw_contact"; }
   bool hasPrepare() const override { return true; }
-  void prepare(const State& state, double time) override;  // refreshes the neighbour list
+  // Refreshes the neighbour list and the elements' axes.
+  void prepare(const State& state, double time) override;
   int itemCount() const override { return static_cast<int>(results_.size()); }
   void computeItems(const State& state, double time, int lo, int hi) override;
   bool couplesFilaments() const override { return true; }
@@ -84,9 +94,11 @@ class VdwContactEffect : public Effect {
   const ContactNeighbourhood& neighbourhood() const { return *nb_; }
   long pairCount() const { return static_cast<long>(nb_->list().pairs().size()); }
   // The contact of elements i and j (j at the minimum image next to i), whether listed or not.
-  ContactPairResult evaluatePair(const Bodies& b, int i, int j) const;
+  ContactPairResult evaluatePair(const Bodies& b, int i, int j) const { return evaluatePair(b, i, j, nullptr); }
 
  private:
+  // With `axes` (null: formed here), every element's axis in `b`.
+  ContactPairResult evaluatePair(const Bodies& b, int i, int j, const Vec3* axes) const;
   // InputError naming the elements when two start inside each other.
   void checkInitialOverlaps() const;
   struct TypePair {
@@ -105,6 +117,7 @@ class VdwContactEffect : public Effect {
   std::shared_ptr<ContactNeighbourhood> nb_;
   bool ownsNeighbourhood_;  // saves the shared list in checkpoints
   std::vector<ContactPairResult> results_;
+  std::vector<Vec3> axes_;  // per element, of the state of the last prepare (tubes)
 };
 
 class ContactDampingEffect : public Effect {
@@ -113,6 +126,8 @@ class ContactDampingEffect : public Effect {
   std::string name() const override { return "contact_damping"; }
   bool dissipates() const override { return true; }
   bool hasPrepare() const override { return true; }
+  // Refreshes the list when this effect owns that (refreshesList), and the elements' axes and
+  // world angular velocities.
   void prepare(const State& state, double time) override;
   int itemCount() const override { return static_cast<int>(results_.size()); }
   void computeItems(const State& state, double time, int lo, int hi) override;
@@ -143,6 +158,7 @@ class ContactDampingEffect : public Effect {
   bool refreshesList_;  // refreshes the shared list in prepare (stepper.hpp)
   std::vector<ContactPairResult> results_;
   std::vector<double> power_;  // per pair
+  std::vector<Vec3> axes_, angularVelocity_;  // per element (world), of the state of the last prepare
 };
 
 // Contact terms of the critical time step (stability.hpp, Effect::addStabilityTerms), per
