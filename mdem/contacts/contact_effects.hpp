@@ -42,9 +42,8 @@ class ContactNeighbourhood {
     s.centre = near + periodicity_.minimumImage(s.centre - near);
     return s;
   }
-  // The same two with the axis given (an effect's per-step copy of every element's axis,
-  // axesOf(): the same bits as segment()'s rotation, formed once per element instead of once
-  // per pair).
+  // The same two with the axis given (an effect's copy of every element's axis, formed in its
+  // prepare() once per element instead of once per pair: the same bits as segment()'s rotation).
   Segment segment(const Bodies& b, int i, const Vec3& axis) const {
     return {b.position[i], axis, halfLength_[b.type[i]]};
   }
