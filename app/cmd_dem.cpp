@@ -72,6 +72,8 @@ Command makeDemCommand() {
       throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
     mdem::RunOptions options;
     options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
+    // The steps done before a resume are not timed here: the ETA extrapolates those run since.
+    options.resumedAt = [&bar](double fraction) { bar.skip(static_cast<int>(std::lround(fraction * 100))); };
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
     bar.finish();
     if (!r.removedStale.empty())

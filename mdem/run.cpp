@@ -335,6 +335,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     if (resumingHere) {
       resumed->restore(sim);
       r.resumedFromStep = sim.stepCount();
+      if (options.resumedAt) options.resumedAt(std::min(1.0, static_cast<double>(sim.stepCount()) / totalSteps));
       run->open(&tail);
     } else {
       if (previous) {

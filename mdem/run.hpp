@@ -26,6 +26,10 @@ struct RunOptions {
   long interruptAfter = -1;
   // Time the phases of the steps and the outputs (RunSummary::profile).
   bool profile = false;
+  // Called once when a run resumes, with the fraction of its steps the checkpoint had done
+  // (the `progress` callback's measure), so that a progress display counts them as done but
+  // not as timed: its ETA then extrapolates the steps run since the resume.
+  std::function<void(double)> resumedAt;
 };
 
 struct StageSummary {
