@@ -114,23 +114,38 @@ std::vector<std::vector<Point>> pixelRuns(const Series& s, const FigureLayout& L
   return runs;
 }
 
-void drawLegend(Image& img, const Figure& f, const FigureLayout& L) {
+// The named series, and the legend's size for them (pixels).
+struct LegendSize {
   std::vector<std::size_t> shown;
+  int width = 0, height = 0;
+};
+constexpr int kLegendPad = 10, kLegendSample = 36, kLegendInset = 12, kLegendGap = 16;
+LegendSize legendSize(const Figure& f, int s) {
+  LegendSize z;
   for (std::size_t i = 0; i < f.series.size(); ++i)
-    if (!f.series[i].name.empty()) shown.push_back(i);
-  if (shown.empty()) return;
-  const int s = L.textScale, th = textHeight(s), rowH = th + 6, sample = 36, pad = 10;
+    if (!f.series[i].name.empty()) z.shown.push_back(i);
+  if (z.shown.empty()) return z;
+  const int rowH = textHeight(s) + 6;
   int textW = 0;
-  for (std::size_t i : shown) textW = std::max(textW, markupWidth(legendText(f.series[i]), s));
-  const int w = pad + sample + 8 + textW + pad, h = pad + static_cast<int>(shown.size()) * rowH - 6 + pad;
-  // The corner that hides the fewest data points (lines sampled between points too).
+  for (std::size_t i : z.shown) textW = std::max(textW, markupWidth(legendText(f.series[i]), s));
+  z.width = kLegendPad + kLegendSample + 8 + textW + kLegendPad;
+  z.height = kLegendPad + static_cast<int>(z.shown.size()) * rowH - 6 + kLegendPad;
+  return z;
+}
+
+// Places the legend (FigureLayout::legend): the inner corner that hides the fewest data points
+// (lines sampled between points too); when every corner hides some and the image is wide enough,
+// outside on the right, with the plot narrowed.
+void placeLegend(const Figure& f, FigureLayout& L, int width) {
+  const LegendSize z = legendSize(f, L.textScale);
+  if (z.shown.empty()) return;
+  const int w = z.width, h = z.height;
   const Rect& p = L.plot;
-  const int inset = 12;
   const std::array<Rect, 4> corners{
-      Rect{p.right - inset - w, p.top + inset, p.right - inset, p.top + inset + h},
-      Rect{p.left + inset, p.top + inset, p.left + inset + w, p.top + inset + h},
-      Rect{p.right - inset - w, p.bottom - inset - h, p.right - inset, p.bottom - inset},
-      Rect{p.left + inset, p.bottom - inset - h, p.left + inset + w, p.bottom - inset}};
+      Rect{p.right - kLegendInset - w, p.top + kLegendInset, p.right - kLegendInset, p.top + kLegendInset + h},
+      Rect{p.left + kLegendInset, p.top + kLegendInset, p.left + kLegendInset + w, p.top + kLegendInset + h},
+      Rect{p.right - kLegendInset - w, p.bottom - kLegendInset - h, p.right - kLegendInset, p.bottom - kLegendInset},
+      Rect{p.left + kLegendInset, p.bottom - kLegendInset - h, p.left + kLegendInset + w, p.bottom - kLegendInset}};
   std::array<long, 4> hidden{};
   for (const Series& ser : f.series)
     for (const auto& run : pixelRuns(ser, L))
@@ -143,7 +158,23 @@ void drawLegend(Image& img, const Figure& f, const FigureLayout& L) {
             hidden[c] += corners[c].contains(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
         }
       }
-  const Rect box = corners[std::min_element(hidden.begin(), hidden.end()) - hidden.begin()];
+  const auto best = std::min_element(hidden.begin(), hidden.end());
+  L.legend = corners[best - hidden.begin()];
+  // Outside only when the plot keeps at least half the image's width.
+  const int right = width - kLegendInset - w - kLegendGap;
+  if (*best == 0 || right - L.plot.left < width / 2) return;
+  L.plot.right = right;
+  L.x.pixHi = L.plot.right - 0.5;
+  L.legend = {right + kLegendGap, p.top, right + kLegendGap + w, p.top + h};
+  L.legendOutside = true;
+}
+
+void drawLegend(Image& img, const Figure& f, const FigureLayout& L) {
+  const LegendSize z = legendSize(f, L.textScale);
+  if (z.shown.empty()) return;
+  const std::vector<std::size_t>& shown = z.shown;
+  const int s = L.textScale, rowH = textHeight(s) + 6, sample = kLegendSample, pad = kLegendPad;
+  const Rect box = L.legend;
   fillRect(img, box, kWhite);
   strokeRect(img, box, kLegendEdge);
   for (std::size_t r = 0; r < shown.size(); ++r) {
@@ -203,6 +234,7 @@ FigureLayout Figure::layout(int width, int height, const std::string& source) co
                      "an image large enough for the axes and labels");
   L.x = {x.scale, L.xTicks.lo, L.xTicks.hi, L.plot.left + 0.5, L.plot.right - 0.5};
   L.y = {y.scale, L.yTicks.lo, L.yTicks.hi, L.plot.bottom - 0.5, L.plot.top + 0.5};
+  placeLegend(*this, L, width);
   return L;
 }
 

@@ -55,6 +55,11 @@ struct FigureLayout {
   AxisTicks xTicks, yTicks;
   AxisMap x, y;
   int textScale = 2;
+  // The legend's box (empty without named series): the inner corner of the plot that hides the
+  // fewest data points, or, when every corner would hide some, beside the plot on the right
+  // (the plot narrowed to make room; legendOutside).
+  Rect legend;
+  bool legendOutside = false;
 };
 
 // The palette colour number i (cycled).

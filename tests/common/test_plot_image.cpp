@@ -144,6 +144,43 @@ TEST(PlotImage, ConstantLinesLandWhereTheAxisMappingPutsThem) {
   EXPECT_LT(strength(img.at(probeCol, bestRow - 3), kBlue), 0.15);
 }
 
+// The legend never covers data it could avoid: in a free inner corner when there is one,
+// otherwise beside the plot (the energies of a relaxation fill every corner: eight series
+// from the top to the bottom of the plot).
+TEST(PlotImage, LegendGoesBesideThePlotWhenEveryCornerHoldsData) {
+  auto lines = [](const std::vector<double>& levels) {
+    Figure f("Levels");
+    f.y.min = 0.0, f.y.max = 8.0;
+    for (std::size_t k = 0; k < levels.size(); ++k)
+      f.add("series " + std::to_string(k), {0.0, 10.0}, {levels[k], levels[k]});
+    return f;
+  };
+  // Lines near the top and near the bottom, across the whole width.
+  const Figure full = lines({0.3, 0.6, 1.0, 1.4, 6.6, 7.0, 7.4, 7.7});
+  const FigureLayout L = full.layout(900, 600);
+  ASSERT_TRUE(L.legendOutside);
+  EXPECT_GE(L.legend.left, L.plot.right);
+  EXPECT_LE(L.legend.right, 900);
+  EXPECT_GT(L.plot.right - L.plot.left, 450);
+  // Each line is drawn across the plot's whole width, right up to its right edge.
+  const Image img = full.render(900, 600);
+  for (std::size_t k = 0; k < full.series.size(); ++k) {
+    const int row = static_cast<int>(std::floor(L.y.toPixel(full.series[k].y[0])));
+    const int col = L.plot.right - 6;
+    double best = 0.0;
+    for (int y = row - 1; y <= row + 1; ++y) best = std::max(best, strength(img.at(col, y), paletteColor(static_cast<int>(k))));
+    EXPECT_GT(best, 0.8) << "series " << k << " at its right end";
+  }
+  // The same lines only in the lower half: the upper corners are free and hold the legend.
+  const Figure lower = lines({0.3, 0.6, 1.0, 1.4, 2.0, 2.4, 2.8, 3.2});
+  const FigureLayout M = lower.layout(900, 600);
+  EXPECT_FALSE(M.legendOutside);
+  EXPECT_GE(M.legend.left, M.plot.left);
+  EXPECT_LE(M.legend.right, M.plot.right);
+  EXPECT_LT(M.legend.bottom, M.y.toPixel(3.2));
+  EXPECT_GT(M.plot.right, L.plot.right);  // the plot keeps its width
+}
+
 TEST(PlotImage, LogAxisRefusesNonPositiveDataNamingTheSeries) {
   Figure f;
   f.y.scale = Scale::Log10;
