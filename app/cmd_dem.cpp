@@ -64,9 +64,11 @@ Command makeDemCommand() {
       mdem::writeFilmStatisticsJson(*film, (std::filesystem::path(dir) / "film.json").string());
     }
     // Progress in percent of the steps; off a terminal a plain line per tenth of the run.
+    // Its note: where the run is (stage, time, the last strain and stress of a tensile stage).
     ProgressBar bar("dem (% of steps)", 100, 10);
-    const std::function<void(double)> progress = [&bar](double fraction) {
-      bar.update(static_cast<int>(std::lround(fraction * 100)));
+    std::string status;
+    const std::function<void(double)> progress = [&bar, &status](double fraction) {
+      bar.update(static_cast<int>(std::lround(fraction * 100)), status);
     };
     if (opt->resume && opt->overwrite)
       throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
@@ -74,6 +76,7 @@ Command makeDemCommand() {
     options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
     // The steps done before a resume are not timed here: the ETA extrapolates those run since.
     options.resumedAt = [&bar](double fraction) { bar.skip(static_cast<int>(std::lround(fraction * 100))); };
+    options.status = [&status](const std::string& line) { status = line; };
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
     bar.finish();
     if (!r.removedStale.empty())

@@ -167,6 +167,21 @@ class StageRun {
     if (compression_ && series) compression_->record(sim_, e);
   }
   bool recordsEvery() const { return csv_ || tensile_ || plot_ || compression_; }
+  // One line on where the stage is, for progress displays: "pull: t = 9.143 ns, strain 0.2834,
+  // stress 4.238 MPa" (the last recorded tensile or compression sample), "relax: t = 2.5 ns".
+  std::string status() const {
+    std::string line = fmt::format("{}t = {:.4g} ns", spec_.name.empty() ? "" : spec_.name + ": ", sim_.time());
+    if (tensile_ && !tensile_->samples().empty()) {
+      const TensileSample& t = tensile_->samples().back();
+      line += fmt::format(", strain {:.4g}, stress {:.4g} MPa", t.strain, t.stress);
+    }
+    if (compression_ && !compression_->samples().empty()) {
+      const CompressionSample& c = compression_->samples().back();
+      line += fmt::format(", cycle {} of {}, strain {:.4g}, pressure {:.4g} MPa", std::min(c.cycle + 1, scene_.compression.cycles),
+                          scene_.compression.cycles, c.strain, c.pressure);
+    }
+    return line;
+  }
   bool reachedFinalStrain() const { return reachedStrain_; }
   bool cyclesDone() const { return compression_ && compression_->done(); }
   void finish(StageSummary& out) {
@@ -404,7 +419,10 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       const bool due = (o.checkpointEvery > 0 && k % o.checkpointEvery == 0) ||
                        (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));
       if (due && !last && !stop) checkpoint();  // (a finished stage moves on at once)
-      if (progress && (k % every == 0 || last)) progress(std::min(1.0, static_cast<double>(k) / totalSteps));
+      if (progress && (k % every == 0 || last)) {
+        if (options.status) options.status(run->status());
+        progress(std::min(1.0, static_cast<double>(k) / totalSteps));
+      }
       const double outputSeconds = std::chrono::duration<double>(Clock::now() - outputs).count();
       r.wallSeconds += outputSeconds;
       if (options.profile) r.profile["outputs (energies, samples, frames, checkpoints)"] += outputSeconds;

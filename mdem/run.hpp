@@ -30,6 +30,9 @@ struct RunOptions {
   // (the `progress` callback's measure), so that a progress display counts them as done but
   // not as timed: its ETA then extrapolates the steps run since the resume.
   std::function<void(double)> resumedAt;
+  // Called before each `progress` report with one line on where the run is (the stage, its
+  // time, and the last tensile or compression sample), for the progress display's note.
+  std::function<void(const std::string&)> status;
 };
 
 struct StageSummary {

@@ -203,6 +203,20 @@ TEST_F(Restart, ResumeReportsTheStepsTheCheckpointHadDone) {
   EXPECT_EQ(resumedAt.size(), 1u);
 }
 
+// The progress display's note: before each progress report, where the run is; after the last
+// one, the run's final time, strain and stress as its summary has them.
+TEST_F(Restart, StatusLinesTellTheTimeStrainAndStress) {
+  std::vector<std::string> status;
+  int reports = 0;
+  RunOptions o;
+  o.status = [&](const std::string& line) { status.push_back(line); };
+  const RunSummary r =
+      runScene(loadScene(scenePath_), (dir_ / "out").string(), [&](double) { ++reports; }, o);
+  ASSERT_GT(reports, 1);
+  EXPECT_EQ(static_cast<int>(status.size()), reports);
+  EXPECT_EQ(status.back(), fmt::format("t = {:.4g} ns, strain {:.4g}, stress {:.4g} MPa", r.time, r.finalStrain, r.finalStress));
+}
+
 TEST_F(Restart, BadCheckpointsAreClearErrors) {
   RunOptions kill;
   kill.interruptAfter = 2 * kEvery + 5;
