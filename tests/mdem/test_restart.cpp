@@ -464,7 +464,13 @@ plot_png = "squeeze.png"
 
 TEST_F(Restart, CompressionResumesBitForBitMidCycle) {
   std::ofstream(scenePath_) << compressionScene();
-  const RunSummary reference = run("reference");
+  std::vector<std::string> status;  // the progress note (StatusLinesTellTheTimeStrainAndStress)
+  RunOptions withStatus;
+  withStatus.status = [&](const std::string& line) { status.push_back(line); };
+  const RunSummary reference = runScene(loadScene(scenePath_), (dir_ / "reference").string(), [](double) {}, withStatus);
+  ASSERT_FALSE(status.empty());
+  EXPECT_EQ(status.back().rfind("squeeze: t = ", 0), 0u) << status.back();
+  EXPECT_NE(status.back().find(", cycle 2 of 2, strain "), std::string::npos) << status.back();
   ASSERT_EQ(reference.stages.size(), 2u);
   const StageSummary& squeeze = reference.stages[1];
   EXPECT_TRUE(squeeze.compression);
