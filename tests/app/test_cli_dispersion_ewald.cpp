@@ -4,6 +4,8 @@
 // far below the Ewald tolerance; the default 30 Å cutoff is visibly worse (the test can fail).
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -32,7 +34,7 @@ struct Energies {
 
 // Writes the cell file, runs the mesochain executable on it and reads its JSON result.
 Energies run(const std::string& name, const std::string& dispersion) {
-  const fs::path dir = fs::temp_directory_path() / "mesochain-test-cli-dispersion";
+  const fs::path dir = mesochain::testing::processTempDir("mesochain-test-cli-dispersion");
   fs::create_directories(dir);
   const fs::path cell = dir / (name + ".toml"), json = dir / (name + ".json");
   std::ofstream(cell) << cellFile(dispersion);

@@ -4,6 +4,8 @@
 // follow the same entries.
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -23,7 +25,7 @@ struct LedgerRun {
 };
 
 LedgerRun run(const std::string& name, const std::string& dispersionModel) {
-  const fs::path dir = fs::temp_directory_path() / "mesochain-test-cli-ledger";
+  const fs::path dir = mesochain::testing::processTempDir("mesochain-test-cli-ledger");
   fs::create_directories(dir);
   const fs::path cell = dir / (name + ".toml"), json = dir / (name + ".json"),
                  log = dir / (name + ".log");

@@ -13,6 +13,8 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+
+#include "tests/support/process_temp_dir.hpp"
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
@@ -54,7 +56,7 @@ ScanSettings ringSettings(std::vector<int> rotationOrders) {
 }
 
 std::string tempPath(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "mesochain-scan-test";
+  const auto dir = mesochain::testing::processTempDir("mesochain-scan-test");
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }

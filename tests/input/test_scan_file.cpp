@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
 #include "common/units.hpp"
@@ -15,7 +17,7 @@ using namespace mesochain;
 using namespace mesochain::objective;
 
 namespace {
-const std::string kDir = (std::filesystem::temp_directory_path() / "mesochain-scan-file").string();
+const std::string kDir = mesochain::testing::processTempDir("mesochain-scan-file").string();
 
 std::string write(const std::string& name, const std::string& text) {
   std::filesystem::create_directories(kDir);

@@ -17,6 +17,8 @@
 #include <omp.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include "common/errors.hpp"
 #include "contact_fixture.hpp"
 #include "mdem/contacts/network_generator.hpp"
@@ -183,7 +185,7 @@ TEST(MdemMultipleTimeStep, BadSettingsNameTheKey) {
   expectError(none, "run.outer_step_ratio");
 
   // The scene file: a ratio that is neither a whole number nor "auto"; a fraction without auto.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mesochain-mts-keys";
+  const std::filesystem::path dir = mesochain::testing::processTempDir("mesochain-mts-keys");
   std::filesystem::create_directories(dir);
   auto fileError = [&](const std::string& run, const std::string& key) {
     const std::string path = (dir / "scene.toml").string();

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include "common/errors.hpp"
 #include "common/units.hpp"
 #include "input/cell_file.hpp"
@@ -131,7 +133,7 @@ TEST(CollapsedTube, DoubleWallNestsTheWallsOneInterlayerApart) {
 }
 
 TEST(CollapsedTube, CellFileBuilderType) {
-  const auto dir = std::filesystem::temp_directory_path() / "mesochain-collapsed-test";
+  const auto dir = mesochain::testing::processTempDir("mesochain-collapsed-test");
   std::filesystem::create_directories(dir);
   const auto path = (dir / "c.toml").string();
   std::ofstream(path) << "format = 1\n[builder]\ntype = \"collapsed\"\nwalls = [[30, 30]]\n"

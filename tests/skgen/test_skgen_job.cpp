@@ -2,6 +2,8 @@
 // tables dftb/skf_file reads back.
 #include <gtest/gtest.h>
 
+#include "tests/support/process_temp_dir.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -46,7 +48,7 @@ std::string errorOf(const std::string& name, const std::string& text, bool run =
   try {
     SkgenJob job = readSkgenJob(path);
     if (run) {
-      job.outputDir = (std::filesystem::temp_directory_path() / "mesochain-skgen-err").string();
+      job.outputDir = mesochain::testing::processTempDir("mesochain-skgen-err").string();
       runSkgen(job);
     }
   } catch (const InputError& e) {
@@ -82,7 +84,7 @@ TEST(SkgenJob, ReadsTheRecipe) {
 
 TEST(SkgenJob, RunWritesTablesTheReaderAccepts) {
   SkgenJob job = readSkgenJob(writeInput("run", kHydrogen));
-  job.outputDir = (std::filesystem::temp_directory_path() / "mesochain-skgen-run").string();
+  job.outputDir = mesochain::testing::processTempDir("mesochain-skgen-run").string();
   double last = -1.0;
   bool monotone = true;
   const SkgenOutput out = runSkgen(job, [&](double f, const std::string&) {
