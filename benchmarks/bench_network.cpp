@@ -59,8 +59,9 @@ struct NetworkBenchOptions {
   bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
   std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
   std::vector<double> massScales;    // non-empty: the same for mass (density) scaling
+  std::vector<double> stepFractions; // non-empty: the same for time_step_fraction
   PullProtocol pull;                 // with inertiaScales: the stress-strain comparison
-  std::string criticalStep = "gershgorin";  // [run] critical_step of the scaled runs
+  std::string criticalStep;  // [run] critical_step of the scaled runs ("": the scene's own)
 };
 
 mdem::Scene networkScene(int total, int perTube, bool isotropic) {
@@ -400,11 +401,20 @@ Command makeBenchNetworkCommand() {
         ->check(CLI::Range(1.0, 1e4))
         ->excludes("--inertia-scales")
         ->excludes("--bond-spectrum");
+    (*sub)->add_option("--step-fractions", opt->stepFractions,
+                       "[run] time_step_fraction: the same table (or --pull curves) per fraction of the critical step, "
+                       "and exit")
+        ->delimiter(',')
+        ->check(CLI::Range(0.01, 1.0))
+        ->excludes("--inertia-scales")
+        ->excludes("--mass-scales")
+        ->excludes("--bond-spectrum");
     (*sub)->add_option("--critical-step", opt->criticalStep,
-                       "with --inertia-scales / --mass-scales / --bond-spectrum: [run] critical_step of the scaled runs")
+                       "with --inertia-scales / --mass-scales / --step-fractions / --bond-spectrum: [run] critical_step of the runs "
+                       "(default: the scene's own)")
         ->check(CLI::IsMember({"gershgorin", "gershgorin_body"}));
     (*sub)->add_flag("--pull", opt->pull.enabled,
-                     "with --inertia-scales: the stress-strain curves instead of the table (pull at 1/ns to 30 % from "
+                     "with --inertia-scales, --mass-scales or --step-fractions: the stress-strain curves instead of the table (pull at 1/ns to 30 % from "
                      "the scene, after --relax-ns if given; a repeat of the scene as given with a perturbed start)");
     (*sub)->add_option("--pull-rate-per-ns", opt->pull.strainRate, "with --pull: the strain rate (default 1/ns)")
         ->check(CLI::PositiveNumber);
@@ -453,18 +463,18 @@ Command makeBenchNetworkCommand() {
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
     if (opt->kernelCurve) return printKernelCurve(*opt);
-    if (opt->bondSpectrum || !opt->inertiaScales.empty() || !opt->massScales.empty()) {
+    if (opt->bondSpectrum || !opt->inertiaScales.empty() || !opt->massScales.empty() || !opt->stepFractions.empty()) {
       mdem::Scene s =
           opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       if (opt->coarsenRelaxed && !opt->coarsenTo.empty()) s = coarsenedFilm(s, opt->coarsenTo);
-      const bool mass = !opt->massScales.empty();
-      const std::vector<double> given = mass ? opt->massScales : opt->inertiaScales;
+      const bool mass = !opt->massScales.empty(), fraction = !opt->stepFractions.empty();
+      const std::vector<double> given = mass ? opt->massScales : fraction ? opt->stepFractions : opt->inertiaScales;
       const std::vector<double> scales = given.empty() ? std::vector<double>{1.0} : given;
-      const bool body = opt->criticalStep == "gershgorin_body";
+      const bool body = opt->criticalStep.empty() ? s.run.bodyFrameCriticalStep : opt->criticalStep == "gershgorin_body";
       if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
-      return printInertiaScaleCurve(s, mass ? InertiaKnob::Mass : InertiaKnob::Rotational, scales, body, opt->seconds,
-                                    opt->threads, opt->pull);
+      const StepKnob knob = mass ? StepKnob::Mass : fraction ? StepKnob::Fraction : StepKnob::Rotational;
+      return printInertiaScaleCurve(s, knob, scales, body, opt->seconds, opt->threads, opt->pull);
     }
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =

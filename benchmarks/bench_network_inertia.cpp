@@ -21,9 +21,10 @@
 namespace mesochain::app {
 
 namespace {
-mdem::Scene scaled(mdem::Scene s, double scale, bool bodyFrame, InertiaKnob knob = InertiaKnob::Rotational) {
+mdem::Scene scaled(mdem::Scene s, double scale, bool bodyFrame, StepKnob knob = StepKnob::Rotational) {
   s.run.bodyFrameCriticalStep = bodyFrame;
-  (knob == InertiaKnob::Mass ? s.run.massScale : s.run.rotationalInertiaScale) = scale;
+  if (knob == StepKnob::Fraction) s.run.timeStepFraction = scale;
+  else (knob == StepKnob::Mass ? s.run.massScale : s.run.rotationalInertiaScale) = scale;
   mdem::scaleInertia(s.bodies, s.elementTypes, s.run.massScale, s.run.rotationalInertiaScale);
   return s;
 }
@@ -137,7 +138,7 @@ int printBondSpectrum(const mdem::Scene& scene, const std::vector<double>& scale
   return 0;
 }
 
-int printInertiaScaleCurve(const mdem::Scene& scene, InertiaKnob knob, const std::vector<double>& scales, bool bodyFrame,
+int printInertiaScaleCurve(const mdem::Scene& scene, StepKnob knob, const std::vector<double>& scales, bool bodyFrame,
                            double seconds, int threads, const PullProtocol& pull) {
   omp_set_num_threads(threads);
   const int n = scene.bodies.size();
@@ -147,8 +148,9 @@ int printInertiaScaleCurve(const mdem::Scene& scene, InertiaKnob knob, const std
       "(time_step_fraction {:.2g}), outer ratio M,\nthroughput, simulated ns per hour, and the energy error without "
       "damping (bonds + vdw_contact) over {} steps at that step: largest |E(t) - E(0)|\nper element and over the mean "
       "kinetic energy.\n",
-      knob == InertiaKnob::Mass ? fmt::format("Mass scaling (rotational_inertia_scale {:g} kept)", scene.run.rotationalInertiaScale)
-                                : std::string("Rotational inertia scaling"),
+      knob == StepKnob::Mass       ? fmt::format("Mass scaling (rotational_inertia_scale {:g} kept)", scene.run.rotationalInertiaScale)
+      : knob == StepKnob::Fraction ? std::string("The time step's fraction of the critical step (scale: time_step_fraction)")
+                                   : std::string("Rotational inertia scaling"),
       n, threads, bodyFrame ? "gershgorin_body" : "gershgorin", scene.run.timeStepFraction, driftSteps);
   std::cout << "scale  critical_ns  h_ns        M  element-steps/s  ns/hour   |dE|/element_zJ  |dE|/<K>\n";
   for (double scale : pull.enabled ? std::vector<double>{} : scales) {
@@ -185,7 +187,9 @@ int printInertiaScaleCurve(const mdem::Scene& scene, InertiaKnob knob, const std
   }
   if (!pull.repeatOnly)
     for (double scale : scales)
-      if (scale != 1.0 || bodyFrame) runs.emplace_back(fmt::format("{}{:g}{}", knob == InertiaKnob::Mass ? "m" : "", scale, bodyFrame ? "b" : ""),
+      if (scale != (knob == StepKnob::Fraction ? scene.run.timeStepFraction : 1.0) || bodyFrame)
+        runs.emplace_back(fmt::format("{}{:g}{}", knob == StepKnob::Mass ? "m" : knob == StepKnob::Fraction ? "f" : "", scale,
+                                      bodyFrame ? "b" : ""),
                          scaled(scene, scale, bodyFrame, knob));
   std::vector<double> reference;
   for (const auto& [name, s] : runs) {

@@ -1,8 +1,9 @@
 #pragma once
-// `mesochain-bench network --bond-spectrum`, `--inertia-scales 1,4,16` and `--mass-scales 1,4,16`:
-// what sets the mDEM time step and what rotational inertia scaling or mass (density) scaling
-// ([run] rotational_inertia_scale, mass_scale; mdem/body.hpp) buys and changes
-// (docs/benchmarks.md, "What sets the mDEM time step" and "Mass scaling").
+// `mesochain-bench network --bond-spectrum`, `--inertia-scales 1,4,16`, `--mass-scales 1,4,16` and
+// `--step-fractions 0.3,0.5,0.7,0.9`: what sets the mDEM time step and what rotational inertia
+// scaling, mass (density) scaling ([run] rotational_inertia_scale, mass_scale; mdem/body.hpp) or
+// the step's fraction of the critical step ([run] time_step_fraction) buy and change
+// (docs/benchmarks.md, "What sets the mDEM time step", "Mass scaling", "The time step fraction").
 #include <vector>
 
 #include "mdem/scene.hpp"
@@ -14,9 +15,9 @@ namespace mesochain::app {
 // step with its contacts and what limits it. Returns 0.
 int printBondSpectrum(const mdem::Scene& scene, const std::vector<double>& scales, bool bodyFrame);
 
-// Which inertia a scale multiplies: the moments alone, or mass and moments (on top of the
-// scene's own rotational_inertia_scale).
-enum class InertiaKnob { Rotational, Mass };
+// What a value of the table sets: the scale of the moments alone, or of mass and moments (on top
+// of the scene's own rotational_inertia_scale), or the time step's fraction of the critical step.
+enum class StepKnob { Rotational, Mass, Fraction };
 
 struct PullProtocol {
   bool enabled = false;
@@ -30,11 +31,11 @@ struct PullProtocol {
   bool repeatOnly = false;     // only the repeat
 };
 
-// Per scale (with critical_step = "gershgorin_body" when bodyFrame), without `pull`: critical and used step, outer ratio, element-steps/s, simulated ns per hour, the
+// Per value of the knob ("scale" below; with critical_step = "gershgorin_body" when bodyFrame), without `pull`: critical and used step, outer ratio, element-steps/s, simulated ns per hour, the
 // energy error without damping at that scale's own step; with `pull` instead, the stress-strain curve of
 // the relax-and-pull protocol per scale, its RMS difference from the scene as given (scale 1), and
 // that of a repeat of it with a perturbed start (the run-to-run scatter). Returns 0.
-int printInertiaScaleCurve(const mdem::Scene& scene, InertiaKnob knob, const std::vector<double>& scales, bool bodyFrame,
+int printInertiaScaleCurve(const mdem::Scene& scene, StepKnob knob, const std::vector<double>& scales, bool bodyFrame,
                            double seconds, int threads, const PullProtocol& pull);
 
 }  // namespace mesochain::app
