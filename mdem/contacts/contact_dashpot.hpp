@@ -19,11 +19,9 @@
 
 namespace mesochain::mdem {
 
-// Closest points of two segments: parameters sa in [-la, la], sb in [-lb, lb].
-inline void closestPoints(const Segment& a, const Segment& b, double* sa, double* sb) {
-  const Vec3 r = a.centre - b.centre;
-  const double c = a.axis.dot(b.axis), e = a.axis.dot(r), f = b.axis.dot(r);
-  const double la = a.halfLength, lb = b.halfLength;
+// Closest points of two segments from c = t_a.t_b, e = t_a.r, f = t_b.r (r = x_a - x_b) and
+// the half lengths: parameters sa in [-la, la], sb in [-lb, lb].
+inline void closestPointParameters(double c, double e, double f, double la, double lb, double* sa, double* sb) {
   double s;
   if (1.0 - c * c > 1e-10) {
     s = std::clamp((c * f - e) / (1.0 - c * c), -la, la);
@@ -37,19 +35,35 @@ inline void closestPoints(const Segment& a, const Segment& b, double* sa, double
   u = std::clamp(f + s * c, -lb, lb);
   *sa = s, *sb = u;
 }
+// Closest points of two segments: parameters sa in [-la, la], sb in [-lb, lb].
+inline void closestPoints(const Segment& a, const Segment& b, double* sa, double* sb) {
+  const Vec3 r = a.centre - b.centre;
+  closestPointParameters(a.axis.dot(b.axis), a.axis.dot(r), b.axis.dot(r), a.halfLength, b.halfLength, sa, sb);
+}
 // Wall-to-wall gap of two tubes of radii ra, rb along the segments: the distance of the closest
 // points of the axes minus both radii (negative: the walls interpenetrate).
 double wallGap(const Segment& a, const Segment& b, double ra, double rb);
 
-// Contact length lambda and weight s (see above).
+// Length of [m - h, m + h] (a segment projected on an axis: centre m, half length h) inside
+// [-l, l].
+inline double projectedOverlap(double m, double h, double l) {
+  return std::max(0.0, std::min(m + h, l) - std::max(m - h, -l));
+}
+
+// Contact length lambda (see above).
 inline double contactLength(const Segment& a, const Segment& b, double ra, double rb) {
-  auto overlap = [](const Segment& p, const Segment& q) {
-    // Projection of q on p's axis, overlapped with [-lp, lp].
-    const double m = (q.centre - p.centre).dot(p.axis), h = q.halfLength * std::abs(q.axis.dot(p.axis));
-    return std::max(0.0, std::min(m + h, p.halfLength) - std::max(m - h, -p.halfLength));
+  auto overlap = [](const Segment& p, const Segment& q) {  // q projected on p's axis
+    return projectedOverlap((q.centre - p.centre).dot(p.axis), q.halfLength * std::abs(q.axis.dot(p.axis)), p.halfLength);
   };
   const double sine = a.axis.cross(b.axis).norm();
   return 0.5 * (overlap(a, b) + overlap(b, a)) + (ra + rb) * sine;
+}
+
+// The weight s of a wall gap below the cut-off: 1 up to fullGap, a smoothstep down to 0 at cutoffGap.
+inline double gapWeight(const ContactDampingSpec& spec, double gap) {
+  if (gap <= spec.fullGap) return 1.0;
+  const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
+  return 1.0 - x * x * (3.0 - 2.0 * x);
 }
 
 // Where and how strongly the dashpot acts: the contact point c and lambda s (zero beyond the
@@ -59,25 +73,21 @@ struct DashpotContact {
   double weightedLength = 0.0;  // lambda s, nm
 };
 inline DashpotContact dashpotContact(const ContactDampingSpec& spec, const Segment& a, const Segment& b, double ra,
-                              double rb) {
+                                     double rb) {
   DashpotContact k;
   double sa, sb;
   closestPoints(a, b, &sa, &sb);
   const Vec3 pa = a.centre + sa * a.axis, pb = b.centre + sb * b.axis;
   const double gap = (pa - pb).norm() - ra - rb;
   if (gap >= spec.cutoffGap) return k;
-  double weight = 1.0;
-  if (gap > spec.fullGap) {
-    const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
-    weight = 1.0 - x * x * (3.0 - 2.0 * x);
-  }
-  k.weightedLength = std::max(0.0, weight * contactLength(a, b, ra, rb));
+  k.weightedLength = std::max(0.0, gapWeight(spec, gap) * contactLength(a, b, ra, rb));
   k.point = 0.5 * (pa + pb);
   return k;
 }
 // The forces and torques of a contact with weightedLength > 0.
 inline ContactPairResult dashpotForces(const ContactDampingSpec& spec, const DashpotContact& k, const Segment& a,
-                                const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb, const Vec3& wb) {
+                                       const Segment& b, const Vec3& va, const Vec3& wa, const Vec3& vb,
+                                       const Vec3& wb) {
   ContactPairResult r;
   const double lw = k.weightedLength;
   const Vec3& c = k.point;
@@ -101,42 +111,19 @@ inline bool dashpotPair(const ContactDampingSpec& spec, const Segment& a, const 
   const Vec3 r = a.centre - b.centre;
   const double c = a.axis.dot(b.axis), e = a.axis.dot(r), f = b.axis.dot(r);
   const double la = a.halfLength, lb = b.halfLength;
-  double s;  // closestPoints
-  if (1.0 - c * c > 1e-10) {
-    s = std::clamp((c * f - e) / (1.0 - c * c), -la, la);
-  } else {
-    const double p0 = -e - lb, p1 = -e + lb;
-    s = std::clamp(0.5 * (std::max(p0, -la) + std::min(p1, la)), -la, la);
-  }
-  double u = std::clamp(f + s * c, -lb, lb);
-  s = std::clamp(u * c - e, -la, la);
-  u = std::clamp(f + s * c, -lb, lb);
+  double s, u;
+  closestPointParameters(c, e, f, la, lb, &s, &u);
   const Vec3 pa = a.centre + s * a.axis, pb = b.centre + u * b.axis;
   const double gap = (pa - pb).norm() - ra - rb;
   if (gap >= spec.cutoffGap) return false;
-  double weight = 1.0;
-  if (gap > spec.fullGap) {
-    const double x = (gap - spec.fullGap) / (spec.cutoffGap - spec.fullGap);
-    weight = 1.0 - x * x * (3.0 - 2.0 * x);
-  }
   const double cosine = std::abs(c);  // contactLength
-  const double ha = lb * cosine, hb = la * cosine;
-  const double overlapA = std::max(0.0, std::min(-e + ha, la) - std::max(-e - ha, -la));
-  const double overlapB = std::max(0.0, std::min(f + hb, lb) - std::max(f - hb, -lb));
-  const double sine = a.axis.cross(b.axis).norm();
-  const double lw = std::max(0.0, weight * (0.5 * (overlapA + overlapB) + (ra + rb) * sine));
+  const double length = 0.5 * (projectedOverlap(-e, lb * cosine, la) + projectedOverlap(f, la * cosine, lb)) +
+                        (ra + rb) * a.axis.cross(b.axis).norm();
+  const double lw = std::max(0.0, gapWeight(spec, gap) * length);
   if (lw <= 0.0) return false;
-  const Vec3 point = 0.5 * (pa + pb);  // dashpotForces
-  const Vec3 vrel = (vb + wb.cross(point - b.centre)) - (va + wa.cross(point - a.centre));
-  out->forceA = spec.translational * lw * vrel;
-  out->forceB = -out->forceA;
-  const Vec3 mr = spec.rotational * lw * (wb - wa);
-  out->torqueA = (point - a.centre).cross(out->forceA) + mr;
-  out->torqueB = (point - b.centre).cross(out->forceB) - mr;
-  out->energy = 0.0;
+  *out = dashpotForces(spec, {0.5 * (pa + pb), lw}, a, b, va, wa, vb, wb);
   return true;
 }
-
 
 // Both in one call.
 ContactPairResult contactDashpot(const ContactDampingSpec& spec, const Segment& a, const Segment& b,

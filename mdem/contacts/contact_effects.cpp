@@ -322,12 +322,10 @@ void ContactDampingEffect::prepare(const State& state, double) {
   power_.resize(results_.size());
   const Bodies& b = state.bodies;
   const int n = b.size();
-  axes_.resize(n), angularVelocity_.resize(n);
+  elementAxes(b, axes_);
+  angularVelocity_.resize(n);
 #pragma omp parallel for schedule(static) if (n > 2048)
-  for (int i = 0; i < n; ++i) {
-    axes_[i] = rotate(b.orientation[i], Vec3::UnitZ());
-    angularVelocity_[i] = b.angularVelocityWorld(i);
-  }
+  for (int i = 0; i < n; ++i) angularVelocity_[i] = b.angularVelocityWorld(i);
 }
 
 void ContactDampingEffect::computeItems(const State& state, double, int lo, int hi) {
