@@ -1,5 +1,6 @@
 #include "input/scan_file.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -145,7 +146,7 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
 
   const auto o = root.table("output");
   if (!o) root.missing("output", "a table [output] with json = \"curve.json\" (and csv, checkpoint)");
-  o->allowOnly({"json", "csv", "checkpoint", "structures"});
+  o->allowOnly({"json", "csv", "checkpoint", "checkpoint_minutes", "structures"});
   const auto inOutputDir = [&outputDir](const std::string& p) {
     return (fs::path(outputDir) / p).lexically_normal().string();
   };
@@ -153,6 +154,16 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   if (o->has("csv")) in.csvPath = inOutputDir(o->string("csv", "the path of the curve CSV"));
   if (o->has("checkpoint"))
     s.checkpointPath = inOutputDir(o->string("checkpoint", "the path of the checkpoint (JSON)"));
+  if (o->has("checkpoint_minutes")) {
+    const double minutes = o->number("checkpoint_minutes", "minutes between checkpoints inside a point (>= 0)");
+    if (!(minutes >= 0) || !std::isfinite(minutes))
+      o->fail("checkpoint_minutes", fmt::format("{}", minutes),
+              "a number of minutes >= 0 (0: after every relaxation step)");
+    if (s.checkpointPath.empty())
+      o->fail("checkpoint_minutes", fmt::format("{} without a checkpoint", minutes),
+              "the key checkpoint beside it (the file the point in progress is kept in)");
+    s.snapshotSeconds = 60.0 * minutes;
+  }
   if (o->has("structures"))
     in.structurePrefix = inOutputDir(o->string("structures", "a path prefix for the relaxed cells"));
   s.identity = identityOf(in.cell);

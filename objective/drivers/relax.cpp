@@ -1,7 +1,10 @@
 #include "objective/drivers/relax.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include "common/errors.hpp"
 #include "common/units.hpp"
@@ -17,6 +20,9 @@ namespace {
 
 const dftb::EvaluationRequest kFull{true, true};
 
+// Called by the fixed-T relaxers with the cell of each accepted step that is not yet converged.
+using AcceptedStep = std::function<void(const ObjectiveCell&)>;
+
 // Every geometry a relaxation evaluates passes the check of a read geometry (finite
 // coordinates, atoms and images at least kMinimumAtomDistanceAngstrom apart): a step that
 // collapses atoms is an error, never an energy.
@@ -31,7 +37,7 @@ dftb::Result evaluateChecked(const dftb::Calculator& calc, const ObjectiveCell& 
 
 // FIRE on the cell atoms at fixed symmetry. Unit masses; the time step adapts.
 bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSettings& s,
-                dftb::Result& result, int& evaluations) {
+                dftb::Result& result, int& evaluations, const AcceptedStep& accepted) {
   const double dtMax = 1.0, fInc = 1.1, fDec = 0.5, alphaStart = 0.1, fAlpha = 0.99;
   const int nMin = 5;
   double dt = 0.25, alpha = alphaStart;
@@ -46,6 +52,7 @@ bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
     if (!std::isfinite(result.freeEnergy) || !f.allFinite())
       throw NumericalError("relaxation: non-finite energy or forces");
     if (fmax < s.forceTolerance) return true;
+    accepted(cell);
     const double power = (f.array() * v.array()).sum();
     if (power > 0) {
       const double fn = f.norm(), vn = v.norm();
@@ -76,7 +83,8 @@ bool relaxAtoms(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
 // Armijo line search, the step capped per atom. Returns false when the line search stalls
 // (energy noise near convergence, or a non-convex region); the caller then continues with FIRE.
 bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSettings& s,
-                dftb::Result& result, int& evaluations, bool& converged) {
+                dftb::Result& result, int& evaluations, bool& converged,
+                const AcceptedStep& accepted) {
   const int memory = 8;
   const Eigen::Index n = 3 * cell.atomCount();
   std::vector<Eigen::VectorXd> ss, ys;
@@ -96,6 +104,7 @@ bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
       converged = true;
       return true;
     }
+    accepted(cell);
     // Two-loop recursion for d = -H g.
     Eigen::VectorXd q = g;
     std::vector<double> alpha(ss.size());
@@ -149,12 +158,13 @@ bool relaxLbfgs(const dftb::Calculator& calc, ObjectiveCell& cell, const RelaxSe
 
 // The atoms at fixed symmetry: L-BFGS first, FIRE for whatever remains if its line search stalls.
 bool relaxAtomsAtFixedSymmetry(const dftb::Calculator& calc, ObjectiveCell& cell,
-                               const RelaxSettings& s, dftb::Result& result, int& evaluations) {
+                               const RelaxSettings& s, dftb::Result& result, int& evaluations,
+                               const AcceptedStep& accepted) {
   bool converged = false;
   if (s.algorithm == RelaxAlgorithm::Lbfgs &&
-      relaxLbfgs(calc, cell, s, result, evaluations, converged))
+      relaxLbfgs(calc, cell, s, result, evaluations, converged, accepted))
     return converged;
-  return relaxAtoms(calc, cell, s, result, evaluations);
+  return relaxAtoms(calc, cell, s, result, evaluations, accepted);
 }
 
 // Changes T and scales the z coordinates with it (an affine warm start).
@@ -164,63 +174,98 @@ void setTranslation(ObjectiveCell& cell, double t) {
   cell.symmetry = cell.symmetry.withTranslation(t);
 }
 
+// Advances the T search by the dF/dT g1 found at t1: bracket by stepping downhill (secant, at
+// most 5 % per step), then regula falsi with the Illinois halving; sets the next t1.
+void advanceSearch(TranslationSearch& ts, double g1) {
+  const double t1 = ts.t1;
+  if (!ts.bracketed && ts.g0 * g1 < 0) {
+    ts.bracketed = true;
+    ts.ta = ts.t0, ts.ga = ts.g0, ts.tb = t1, ts.gb = g1;
+  } else if (ts.bracketed) {
+    if (g1 * ts.ga < 0) {
+      ts.tb = t1, ts.gb = g1;
+      if (ts.side == -1) ts.ga *= 0.5;
+      ts.side = -1;
+    } else {
+      ts.ta = t1, ts.ga = g1;
+      if (ts.side == 1) ts.gb *= 0.5;
+      ts.side = 1;
+    }
+  }
+  double next;
+  if (ts.bracketed) {
+    next = (ts.ta * ts.gb - ts.tb * ts.ga) / (ts.gb - ts.ga);
+  } else {
+    const double slope = (g1 - ts.g0) / (t1 - ts.t0);
+    next = slope > 0 ? t1 - g1 / slope : t1 - 0.05 * t1 * (g1 > 0 ? 1 : -1);
+    next = std::clamp(next, 0.95 * t1, 1.05 * t1);
+  }
+  ts.t0 = t1, ts.g0 = g1, ts.t1 = next;
+  ++ts.iteration;
+}
+
 }  // namespace
 
 RelaxOutcome relax(const dftb::Calculator& calc, ObjectiveCell cell, const RelaxSettings& s) {
   RelaxOutcome out;
+  TranslationSearch ts;
+  if (s.resumeFrom) {
+    const RelaxProgress& from = *s.resumeFrom;
+    if (from.cell.atomCount() != cell.atomCount() || from.cell.species != cell.species)
+      throw InputError("the relaxation to resume", "its snapshot",
+                       fmt::format("a snapshot of {} atoms of other species or order", from.cell.atomCount()),
+                       fmt::format("a snapshot of this cell ({} atoms)", cell.atomCount()));
+    cell = from.cell;
+    out.evaluations = from.evaluations;
+    out.history = from.history;
+    ts = from.search;
+  }
+  using Clock = std::chrono::steady_clock;
+  auto lastSnapshot = Clock::now();
+  const AcceptedStep accepted = [&](const ObjectiveCell& now) {
+    if (!s.snapshot ||
+        std::chrono::duration<double>(Clock::now() - lastSnapshot).count() < s.snapshotSeconds)
+      return;
+    s.snapshot(RelaxProgress{now, out.evaluations, out.history, ts});
+    lastSnapshot = Clock::now();
+  };
   auto relaxAt = [&](double t) {
     if (t != cell.symmetry.translation()) setTranslation(cell, t);
-    const bool ok = relaxAtomsAtFixedSymmetry(calc, cell, s, out.result, out.evaluations);
+    const bool ok = relaxAtomsAtFixedSymmetry(calc, cell, s, out.result, out.evaluations, accepted);
     out.history.push_back({cell.symmetry.translation(), out.result.freeEnergy,
                            maxForce(out.result.gradient), -out.result.dFdTranslation});
     return ok;
   };
-  bool atomsOk = relaxAt(cell.symmetry.translation());
-  if (!s.relaxTranslation || cell.symmetry.isRing()) {
-    out.converged = atomsOk;
-    out.cell = cell;
-    return out;
+  const bool searching = s.relaxTranslation && !cell.symmetry.isRing();
+  const auto axialConverged = [&] { return std::abs(out.result.dFdTranslation) < s.axialTolerance; };
+  bool atomsOk = false;
+  if (ts.iteration < 0) {
+    atomsOk = relaxAt(cell.symmetry.translation());
+    if (!searching) {
+      out.converged = atomsOk;
+      out.cell = cell;
+      return out;
+    }
+    if (atomsOk && axialConverged()) {
+      out.converged = true;
+      out.cell = cell;
+      return out;
+    }
+    // The first step of the search: 1 % of T downhill of dF/dT.
+    ts.t0 = cell.symmetry.translation(), ts.g0 = out.result.dFdTranslation;
+    ts.t1 = ts.t0 * (1.0 - 0.01 * (ts.g0 > 0 ? 1 : -1));
+    ts.iteration = 0;
   }
-  // Root of g(T) = dF/dT: bracket by stepping downhill, then regula falsi (Illinois variant).
-  double t0 = cell.symmetry.translation(), g0 = out.result.dFdTranslation;
-  double t1 = t0 * (1.0 - 0.01 * (g0 > 0 ? 1 : -1)), g1 = 0;
-  bool bracketed = false;
-  double ta = 0, ga = 0, tb = 0, gb = 0;
-  int side = 0;
-  for (int it = 0; it < s.maxTranslationSteps; ++it) {
-    if (std::abs(out.result.dFdTranslation) < s.axialTolerance && atomsOk) {
+  // Root of g(T) = dF/dT (the state between fixed-T relaxations is `ts`, so that a snapshot
+  // taken inside relaxAt resumes here).
+  while (ts.iteration < s.maxTranslationSteps) {
+    atomsOk = relaxAt(ts.t1);
+    advanceSearch(ts, out.result.dFdTranslation);
+    if (atomsOk && axialConverged()) {
       out.converged = true;
       break;
     }
-    atomsOk = relaxAt(t1);
-    g1 = out.result.dFdTranslation;
-    if (!bracketed && g0 * g1 < 0) {
-      bracketed = true;
-      ta = t0, ga = g0, tb = t1, gb = g1;
-    } else if (bracketed) {
-      if (g1 * ga < 0) {
-        tb = t1, gb = g1;
-        if (side == -1) ga *= 0.5;
-        side = -1;
-      } else {
-        ta = t1, ga = g1;
-        if (side == 1) gb *= 0.5;
-        side = 1;
-      }
-    }
-    double next;
-    if (bracketed) {
-      next = (ta * gb - tb * ga) / (gb - ga);
-    } else {
-      // Secant extrapolation, at most 5% per step.
-      const double slope = (g1 - g0) / (t1 - t0);
-      next = slope > 0 ? t1 - g1 / slope : t1 - 0.05 * t1 * (g1 > 0 ? 1 : -1);
-      next = std::clamp(next, 0.95 * t1, 1.05 * t1);
-    }
-    t0 = t1, g0 = g1, t1 = next;
   }
-  if (!out.converged)
-    out.converged = atomsOk && std::abs(out.result.dFdTranslation) < s.axialTolerance;
   out.cell = cell;
   return out;
 }

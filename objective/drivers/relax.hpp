@@ -4,6 +4,7 @@
 // axial force dF/dT = 0 (safeguarded secant / regula falsi on dF/dT, each point relaxed).
 // Energies minimised are the Mermin free energy of dftb::Calculator.
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "dftb/calculator.hpp"
@@ -12,6 +13,36 @@
 namespace mesochain::objective {
 
 enum class RelaxAlgorithm { Lbfgs, Fire };
+
+struct RelaxStep {
+  double translation = 0.0;  // Bohr
+  double freeEnergy = 0.0;   // Hartree per cell
+  double maxForce = 0.0;     // Hartree/Bohr
+  double axialForce = 0.0;   // -dF/dT, Hartree/Bohr
+};
+
+// The search for T0 (relaxTranslation) between two fixed-T relaxations: the safeguarded secant
+// until dF/dT changes sign, then regula falsi (Illinois) on the bracket [ta, tb].
+struct TranslationSearch {
+  int iteration = -1;  // -1: the first fixed-T relaxation, at the starting T, is under way
+  double t0 = 0.0, g0 = 0.0;  // the previous translation (Bohr) and its dF/dT (Hartree/Bohr)
+  double t1 = 0.0;            // the translation being relaxed at
+  bool bracketed = false;
+  double ta = 0.0, ga = 0.0, tb = 0.0, gb = 0.0;
+  int side = 0;               // which end regula falsi moved last (Illinois halving)
+};
+
+// Where a relaxation stands after an accepted step: enough to continue it after an
+// interruption (RelaxSettings::snapshot, resumeFrom). The fixed-T relaxation under way restarts
+// from `cell` with a fresh L-BFGS memory (or FIRE velocity) and its own max_steps again, so a
+// resumed relaxation takes other steps than an uninterrupted one to the same tolerances; the
+// T search continues where it was.
+struct RelaxProgress {
+  ObjectiveCell cell;                // the atoms and symmetry (the T) of the accepted step
+  int evaluations = 0;               // energy evaluations so far, over every T
+  std::vector<RelaxStep> history;    // the fixed-T relaxations finished
+  TranslationSearch search;
+};
 
 struct RelaxSettings {
   // L-BFGS with a backtracking line search (falls back to FIRE when the search stalls), or FIRE.
@@ -24,13 +55,14 @@ struct RelaxSettings {
   double maxDisplacement = 0.2;  // Bohr per FIRE step
   // Called after every energy evaluation: (step, free energy, largest force).
   std::function<void(int, double, double)> progress;
-};
-
-struct RelaxStep {
-  double translation = 0.0;  // Bohr
-  double freeEnergy = 0.0;   // Hartree per cell
-  double maxForce = 0.0;     // Hartree/Bohr
-  double axialForce = 0.0;   // -dF/dT, Hartree/Bohr
+  // Called with the relaxation's state after an accepted step, when at least snapshotSeconds
+  // of wall time have passed since the start or the previous call (0: after every accepted
+  // step): how a scan keeps a long relaxation in its checkpoint.
+  std::function<void(const RelaxProgress&)> snapshot;
+  double snapshotSeconds = 600.0;
+  // Continue this relaxation (a snapshot of the same cell and settings) instead of starting
+  // from the cell given to relax().
+  std::shared_ptr<const RelaxProgress> resumeFrom;
 };
 
 struct RelaxOutcome {

@@ -267,9 +267,11 @@ void collectSettings(const std::string& prefix, const S& s,
       if (role == FieldRole::Result) collectSettings(prefix + name + ".", v, out);
     } else if constexpr (std::is_invocable_v<T, int, double, double> ||
                          std::is_invocable_v<T, const ScanPoint&, int, int> ||
-                         std::is_same_v<T, std::shared_ptr<const ScanReference>>) {
-      // a callback (progress, pointDone) or the given reference (checked on its own): never a
-      // result setting
+                         std::is_invocable_v<T, const RelaxProgress&> ||
+                         std::is_same_v<T, std::shared_ptr<const ScanReference>> ||
+                         std::is_same_v<T, std::shared_ptr<const RelaxProgress>>) {
+      // a callback (progress, pointDone, snapshot), the given reference (checked on its own) or
+      // a relaxation to resume: never a result setting
     } else {
       if (role == FieldRole::Result) out[prefix + name] = valueText(v);
     }
@@ -433,6 +435,9 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     Eigen::VectorXd dq;
   };
   std::map<int, Charges> chargesAfter;
+  // Points relaxed by all ranks together keep their progress in the checkpoint (rank 0 writes);
+  // points of groups of ranks (below) do not.
+  bool snapshotPoints = !s.checkpointPath.empty();
   auto relaxPoint = [&](const Calculators& calcs, int index, ObjectiveCell start, bool reference,
                         ProgressBar& bar, int total) {
     const PlanEntry& e = plan[index];
@@ -450,6 +455,22 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
       bar.update(index, fmt::format("point {}/{}: evaluation {} max|force| {:.1e}", index + 1,
                                     total, step, fmax));
     };
+    if (snapshotPoints) {
+      if (checkpoint.inProgress && checkpoint.inProgress->index == index) {
+        const RelaxProgress& from = checkpoint.inProgress->progress;
+        if (comm.isRoot())
+          std::cerr << fmt::format("mesochain: point {}/{} continues from its snapshot in {} ({} evaluations, "
+                                   "{} fixed-T relaxation(s) done)\n",
+                                   index + 1, total, s.checkpointPath, from.evaluations, from.history.size());
+        rs.resumeFrom = std::make_shared<const RelaxProgress>(from);
+      }
+      rs.snapshotSeconds = s.snapshotSeconds;
+      rs.snapshot = [&, index](const RelaxProgress& now) {
+        checkpoint.inProgress = PointInProgress{index, e.deformation, e.rotationOrder, now};
+        checkpoint.planSize = total;
+        if (comm.isRoot()) writeScanCheckpoint(s.checkpointPath, checkpoint, cell);
+      };
+    }
     const auto t0 = std::chrono::steady_clock::now();
     RelaxOutcome o;
     try {
@@ -465,6 +486,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
       throw InputError(what, err.what());
     }
     if (const auto dq = calc.chargeCache().stored(species)) chargesAfter[index] = {ring, species, *dq};
+    if (checkpoint.inProgress && checkpoint.inProgress->index == index) checkpoint.inProgress.reset();
     ScanPoint p;
     p.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     p.deformation = e.deformation;
@@ -524,6 +546,7 @@ ScanResult runScan(const ObjectiveCell& cell, std::shared_ptr<const dftb::Parame
     if (k == 0) plan = makePlan(s, done.at(0).cell.symmetry.translation(), bendSource);
   }
   if (grouped) {
+    snapshotPoints = false;
     // Chain c of the pending ones goes to group c mod G; group g holds the ranks
     // [g size / G, (g + 1) size / G).
     const int groups = std::min<int>(static_cast<int>(pendingChains.size()), comm.size());

@@ -20,11 +20,14 @@
 // cellsPerSlice: energies per slice of length T0 (N_a objective cells of a helical cell with
 // rotation order N_a; one translational cell).
 //
-// A checkpoint (JSON) is written atomically (temporary file + rename) after every point; a scan
+// A checkpoint (JSON) is written atomically (temporary file + rename) after every point, and
+// during a long point every snapshotSeconds with where its relaxation stands; a scan
 // resumed from it skips the completed points whose deformation is in the current list
-// (restoring their relaxed atoms for warm starts), computes the others, keeps the checkpointed
-// points no longer listed aside in the file, and refuses a checkpoint whose input hash (all
-// settings except the deformation list) differs from the current input.
+// (restoring their relaxed atoms for warm starts), continues the point in progress from its
+// snapshot (RelaxProgress: its atoms, the T search, the evaluations so far), computes the others,
+// keeps the checkpointed points no longer listed aside in the file, and refuses a checkpoint whose
+// input hash (all settings except the deformation list) differs from the current input. (Points
+// computed by groups of MPI ranks, below, are checkpointed when finished only.)
 //
 // The SCC loop of a point starts from the converged charges of the point it is warm-started
 // from (when this run computed that point with the same kind of cell, straight or ring), else
@@ -76,6 +79,9 @@ struct ScanSettings {
   // paths); part of the input hash.
   std::string identity;
   std::string checkpointPath;        // empty: no checkpoint
+  // Inside a point's relaxation, the checkpoint is also written after an accepted step when this
+  // much wall time has passed since the last write (the point in progress; 0: every step).
+  double snapshotSeconds = 600.0;
   bool resume = false;               // read checkpointPath (if it exists) and continue
   int stopAfter = -1;                // >= 0: return after computing this many new points
   bool progressBar = true;           // draw common/progress_bar on stderr (when a terminal)

@@ -4,12 +4,22 @@
 // Written atomically (common/atomic_file.hpp): the text goes to PATH.tmp.PID, which is then
 // renamed over PATH, so an interruption leaves either the previous or the new checkpoint, never half of one.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "objective/drivers/scan.hpp"
 
 namespace mesochain::objective {
+
+// The point whose relaxation was under way: its plan index and key (deformation, or the ring's
+// rotation order) and where its relaxation stood (RelaxSettings::snapshot).
+struct PointInProgress {
+  int index = -1;
+  double deformation = 0.0;
+  int rotationOrder = 0;
+  RelaxProgress progress;
+};
 
 struct ScanCheckpoint {
   std::string inputHash;
@@ -22,6 +32,9 @@ struct ScanCheckpoint {
   // Completed points whose deformation is no longer in the scan's list: kept (never deleted) so
   // that a later list holding them again reuses them, but not part of the curve.
   std::vector<ScanPoint> keptAside;
+  // A point started but not finished (written every ScanSettings::snapshotSeconds of its
+  // relaxation): a resumed scan continues it from there (no value: none, or an older checkpoint).
+  std::optional<PointInProgress> inProgress;
 };
 
 // What identifies a planned point across deformation lists: stretch and twist points by their
@@ -34,7 +47,9 @@ struct PlannedPoint {
 
 // Distributes the points of `old` (completed and kept aside) over the plan of the current
 // list: a point whose key matches plan index k becomes completed[k] of the result; the others
-// become its keptAside. The result carries `old`'s input hash and kind; planSize = plan.size().
+// become its keptAside. The point in progress keeps its place when its key matches a plan index
+// not completed (it gets that index), else it is dropped. The result carries `old`'s input hash
+// and kind; planSize = plan.size().
 ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan);
 
 // Writes `checkpoint` (species taken from `speciesSource`, which has the cell's atoms).

@@ -1,6 +1,8 @@
 #include "objective/drivers/scan_reference.hpp"
 
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -33,8 +35,22 @@ ScanReference relaxScanReference(const ObjectiveCell& cell,
                                  const ScanSettings& settings,
                                  const parallel::Communicator& comm) {
   ScanSettings s = settings;
-  s.checkpointPath.clear();
-  s.resume = false;
+  // With a checkpoint path (the chain's reference.checkpoint.json), the reference's relaxation
+  // is kept there as it goes and continued from it: a checkpoint of other settings is replaced.
+  ScanReference out;
+  out.identity = referenceIdentity(cell, calculator, settings);
+  s.resume = !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath);
+  if (s.resume) {
+    const ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
+    if (old.inputHash != scanInputHash(cell, calculator, s)) {
+      std::cerr << fmt::format("mesochain: note: {} holds a reference of other settings; relaxing afresh\n",
+                               s.checkpointPath);
+      s.resume = false;
+    } else if (old.completed.count(0)) {
+      out.point = old.completed.at(0);  // relaxed before the stage could record it
+      return out;
+    }
+  }
   s.reference = nullptr;
   s.pointDone = nullptr;
   s.stopAfter = 1;  // point 0, the reference, only
@@ -45,8 +61,6 @@ ScanReference relaxScanReference(const ObjectiveCell& cell,
     s.values = {0.01};
   }
   const ScanResult r = runScan(cell, std::move(params), calculator, s, comm);
-  ScanReference out;
-  out.identity = referenceIdentity(cell, calculator, settings);
   for (const ScanPoint& p : r.points) out.point = p;  // the only point
   return out;
 }

@@ -20,8 +20,11 @@ std::map<std::string, std::string> referenceIdentity(const ObjectiveCell& cell,
                                                      const ScanSettings& settings);
 
 // Relaxes the reference of the scan `settings` (runScan stopped after its point 0: the straight
-// cell relaxed at fixed symmetry, T0 searched when settings.relax.relaxTranslation). The
-// checkpoint, resume, list and given reference of `settings` are not used.
+// cell relaxed at fixed symmetry, T0 searched when settings.relax.relaxTranslation). With a
+// checkpoint path in `settings`, the relaxation is kept there as it goes (snapshotSeconds) and a
+// later call continues it, or returns the reference recorded there when it was finished; a
+// checkpoint of other settings is replaced (a note on stderr). Resume, list and given reference
+// of `settings` are not used.
 ScanReference relaxScanReference(const ObjectiveCell& cell,
                                  std::shared_ptr<const dftb::ParameterSet> params,
                                  const dftb::CalculatorSettings& calculator,

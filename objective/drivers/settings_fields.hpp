@@ -33,7 +33,7 @@ template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, RelaxSettings>
 void forEachField(S& s, F&& f) {
   auto& [algorithm, forceTolerance, maxSteps, relaxTranslation, axialTolerance,
-         maxTranslationSteps, maxDisplacement, progress] = s;
+         maxTranslationSteps, maxDisplacement, progress, snapshot, snapshotSeconds, resumeFrom] = s;
   f("algorithm", algorithm, FieldRole::Result);
   f("force_tolerance", forceTolerance, FieldRole::Result);
   f("max_steps", maxSteps, FieldRole::Result);
@@ -42,13 +42,18 @@ void forEachField(S& s, F&& f) {
   f("max_translation_steps", maxTranslationSteps, FieldRole::Result);
   f("max_displacement", maxDisplacement, FieldRole::Result);
   f("progress", progress, FieldRole::Run);
+  f("snapshot", snapshot, FieldRole::Run);
+  f("snapshot_seconds", snapshotSeconds, FieldRole::Run);
+  // A snapshot of the same relaxation: where it continues, not what it computes.
+  f("resume_from", resumeFrom, FieldRole::Run);
 }
 
 template <class S, class F>
   requires std::is_same_v<std::remove_const_t<S>, ScanSettings>
 void forEachField(S& s, F&& f) {
   auto& [kind, direction, values, rotationOrders, relax, ringAngular, dimensionsInterlayer,
-         identity, checkpointPath, resume, stopAfter, progressBar, pointDone, reference] = s;
+         identity, checkpointPath, snapshotSeconds, resume, stopAfter, progressBar, pointDone,
+         reference] = s;
   f("kind", kind, FieldRole::Result);
   f("direction", direction, FieldRole::Result);
   // The list may change between runs: points are matched by their deformation (reuseCheckpoint).
@@ -59,6 +64,7 @@ void forEachField(S& s, F&& f) {
   f("dimensions_interlayer_bohr", dimensionsInterlayer, FieldRole::Result);
   f("identity", identity, FieldRole::Result);
   f("checkpoint_path", checkpointPath, FieldRole::Run);
+  f("snapshot_seconds", snapshotSeconds, FieldRole::Run);
   f("resume", resume, FieldRole::Run);
   f("stop_after", stopAfter, FieldRole::Run);
   f("progress_bar", progressBar, FieldRole::Run);

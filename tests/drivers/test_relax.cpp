@@ -1,9 +1,13 @@
 // Relaxation at fixed symmetry: the FIRE relaxation reaches the force tolerance, and the search
-// for T0 lands where the axial force vanishes, i.e. at the minimum of the relaxed F(T).
+// for T0 lands where the axial force vanishes, i.e. at the minimum of the relaxed F(T); an
+// interrupted relaxation resumes from its snapshot to the same minimum.
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "common/errors.hpp"
 #include "common/units.hpp"
 #include "objective/core/nanotube_builder.hpp"
 #include "objective/drivers/relax.hpp"
@@ -49,4 +53,98 @@ TEST(Relax, AtomsAndTranslationOfAZigzagTube) {
   const double r0 = std::hypot(cell.positions(0, 0), cell.positions(1, 0));
   const double r1 = std::hypot(out.cell.positions(0, 0), out.cell.positions(1, 0));
   EXPECT_NEAR(r1 / r0, 1.0, 0.05);
+}
+
+// A relaxation interrupted after an accepted step continues from its snapshot: the T search
+// keeps the fixed-T relaxations it had finished and its bracket, the atoms restart where they
+// were, and the result meets the same tolerances at the same T0 and energy as the uninterrupted
+// run (to the tolerances: the resumed L-BFGS starts with an empty memory). Interrupted in the
+// first fixed-T relaxation and in a later one of the search; with FIRE as well.
+namespace {
+struct Interrupted {};
+}  // namespace
+
+TEST(Relax, ResumesFromASnapshotToTheSameT0AndEnergy) {
+  const auto calc = calculator();
+  ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
+  cell.positions(0, 1) += 0.05;
+  cell.positions.row(2) *= 1.01;  // T 1 % off T0: the search takes several fixed-T relaxations
+  cell.symmetry = cell.symmetry.withTranslation(cell.symmetry.translation() * 1.01);
+  for (const RelaxAlgorithm algorithm : {RelaxAlgorithm::Lbfgs, RelaxAlgorithm::Fire}) {
+    RelaxSettings rs;
+    rs.algorithm = algorithm;
+    rs.forceTolerance = 1e-5;
+    rs.axialTolerance = 1e-5;
+    rs.relaxTranslation = true;
+    rs.maxSteps = 2000;
+    const RelaxOutcome whole = relax(calc, cell, rs);
+    ASSERT_TRUE(whole.converged);
+    ASSERT_GE(whole.history.size(), 3u) << "the test needs a search over several translations";
+    std::vector<RelaxProgress> snapshots;
+    RelaxSettings recorded = rs;
+    recorded.snapshotSeconds = 0;  // a snapshot after every accepted step
+    recorded.snapshot = [&](const RelaxProgress& p) { snapshots.push_back(p); };
+    const RelaxOutcome again = relax(calc, cell, recorded);
+    EXPECT_EQ(again.evaluations, whole.evaluations) << "snapshots do not change the relaxation";
+    EXPECT_EQ(again.result.freeEnergy, whole.result.freeEnergy);
+    // One snapshot inside the first fixed-T relaxation, one inside the search.
+    const auto inside = [&](bool search) {
+      for (const RelaxProgress& p : snapshots)
+        if ((p.search.iteration >= 1) == search && p.evaluations > 2) return p;
+      ADD_FAILURE() << "no snapshot " << (search ? "inside the search" : "before it");
+      return RelaxProgress{};
+    };
+    for (const bool search : {false, true}) {
+      const RelaxProgress at = inside(search);
+      if (at.cell.atomCount() == 0) continue;
+      // The interruption: a run that stops at that snapshot's evaluation.
+      RelaxSettings killed = rs;
+      killed.snapshotSeconds = 0;
+      RelaxProgress last;
+      killed.snapshot = [&](const RelaxProgress& p) {
+        last = p;
+        if (p.evaluations >= at.evaluations) throw Interrupted{};
+      };
+      EXPECT_THROW(relax(calc, cell, killed), Interrupted);
+      EXPECT_EQ(last.evaluations, at.evaluations);
+      EXPECT_EQ(last.search.iteration, at.search.iteration);
+      EXPECT_EQ(last.history.size(), at.history.size());
+      RelaxSettings resumed = rs;
+      resumed.resumeFrom = std::make_shared<const RelaxProgress>(last);
+      ObjectiveCell other = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);  // ignored
+      const RelaxOutcome r = relax(calc, other, resumed);
+      ASSERT_TRUE(r.converged);
+      EXPECT_LT(maxForce(r.result.gradient), 1e-5);
+      EXPECT_LT(std::abs(r.result.dFdTranslation), 1e-5);
+      EXPECT_GT(r.evaluations, last.evaluations) << "the count continues";
+      // The finished fixed-T relaxations are kept, then the search goes on from its state.
+      ASSERT_GE(r.history.size(), last.history.size());
+      for (std::size_t k = 0; k < last.history.size(); ++k)
+        EXPECT_EQ(r.history[k].translation, last.history[k].translation);
+      if (search) {
+        EXPECT_EQ(r.history[last.history.size()].translation, last.cell.symmetry.translation());
+      }
+      // The same minimum: T0 within what |dF/dT| < 1e-5 allows (the axial stiffness of this cell
+      // is about 0.2 Ha/Bohr^2, so 1e-5 / 0.2 = 5e-5 Bohr), the energy to 1e-8 Ha.
+      EXPECT_NEAR(r.cell.symmetry.translation(), whole.cell.symmetry.translation(), 1e-4);
+      EXPECT_NEAR(r.result.freeEnergy, whole.result.freeEnergy, 1e-8);
+      // The search took the uninterrupted run's translations: a dF/dT that differs by what the
+      // force tolerance allows moves a secant step by about 1e-5 / 0.29 = 3.5e-5 Bohr.
+      ASSERT_EQ(r.history.size(), whole.history.size());
+      for (std::size_t k = 0; k < r.history.size(); ++k)
+        EXPECT_NEAR(r.history[k].translation, whole.history[k].translation, 5e-5) << "relaxation " << k;
+    }
+  }
+}
+
+TEST(Relax, RefusesASnapshotOfAnotherCell) {
+  const auto calc = calculator();
+  RelaxProgress p;
+  p.cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
+  const int n = p.cell.atomCount();
+  p.cell.positions.conservativeResize(3, n - 1);  // one atom fewer
+  p.cell.species.resize(n - 1);
+  RelaxSettings rs;
+  rs.resumeFrom = std::make_shared<const RelaxProgress>(p);
+  EXPECT_THROW(relax(calc, buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr), rs), InputError);
 }

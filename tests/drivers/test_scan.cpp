@@ -256,6 +256,80 @@ const ScanPoint* pointAt(const ScanResult& r, double deformation) {
 }
 }  // namespace
 
+// A scan killed inside a point's relaxation keeps that point in its checkpoint (written every
+// snapshotSeconds of the relaxation; here after every step) and a resumed scan continues it from
+// there: the points come out at the same energies (the resumed point takes other L-BFGS steps to
+// the same tolerance), the point in progress disappears from the checkpoint once finished, and a
+// point in progress that is no longer in the list is dropped.
+TEST(Scan, ResumesThePointInProgress) {
+  const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
+  const auto params = carbon();
+  const auto calc = settings(16);
+  ScanSettings s = stretchSettings();
+  s.relax.forceTolerance = 1e-5;
+  s.relax.axialTolerance = 1e-5;
+  const ScanResult full = runScan(tube, params, calc, s);
+  const std::string path = resumeFromFreshCheckpoint(s, "in-progress.json");
+  s.snapshotSeconds = 0;
+  struct Killed {};
+  int finished = 0, evaluationsAtKill = 0;
+  ScanSettings killed = s;
+  killed.pointDone = [&](const ScanPoint&, int, int) { ++finished; };
+  killed.relax.progress = [&](int evaluation, double, double) {
+    // Inside the second point of the plan (strain +0.01), after a few accepted steps.
+    if (finished == 1 && evaluation >= 4) {
+      evaluationsAtKill = evaluation;
+      throw Killed{};
+    }
+  };
+  EXPECT_THROW(runScan(tube, params, calc, killed), Killed);
+  ASSERT_EQ(finished, 1);
+  {
+    std::ifstream in(path);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j.contains("in_progress"));
+    EXPECT_EQ(j["in_progress"]["index"], 1);
+    EXPECT_EQ(j["in_progress"]["deformation"], 0.01);
+    EXPECT_GT(j["in_progress"]["evaluations"].get<int>(), 1);
+    EXPECT_LT(j["in_progress"]["evaluations"].get<int>(), evaluationsAtKill);
+    EXPECT_EQ(j["completed"].size(), 1u);
+  }
+  int firstEvaluation = 0;  // the count the resumed point reports first: after the snapshot's
+  ScanSettings resuming = s;
+  finished = 0;
+  resuming.pointDone = [&](const ScanPoint&, int, int) { ++finished; };
+  resuming.relax.progress = [&](int evaluation, double, double) {
+    if (finished == 1 && firstEvaluation == 0) firstEvaluation = evaluation;
+  };
+  const ScanResult rest = runScan(tube, params, calc, resuming);
+  EXPECT_GT(firstEvaluation, 2) << "point +0.01 started afresh instead of from its snapshot";
+  EXPECT_LE(firstEvaluation, evaluationsAtKill);  // the step after the snapshot is taken again
+  ASSERT_TRUE(rest.complete);
+  EXPECT_EQ(rest.computed, 3);
+  ASSERT_EQ(rest.points.size(), full.points.size());
+  for (std::size_t k = 0; k < full.points.size(); ++k) {
+    EXPECT_EQ(rest.points[k].deformation, full.points[k].deformation);
+    EXPECT_TRUE(rest.points[k].converged);
+    // To the force tolerance: E error ~ |F|^2 / k, far below 1e-8 Ha for |F| < 1e-5 Ha/Bohr.
+    EXPECT_NEAR(rest.points[k].energy, full.points[k].energy, 1e-8) << k;
+  }
+  {
+    std::ifstream in(path);
+    EXPECT_FALSE(nlohmann::json::parse(in).contains("in_progress"));
+  }
+  // Killed again inside +0.01 of a fresh run; resumed with that strain no longer listed: the point
+  // in progress is dropped and the others are computed as usual.
+  std::filesystem::remove(path);
+  finished = 0;
+  EXPECT_THROW(runScan(tube, params, calc, killed), Killed);
+  ScanSettings shorter = s;
+  shorter.values = {0.02, -0.01};
+  const ScanResult without = runScan(tube, params, calc, shorter);
+  ASSERT_TRUE(without.complete);
+  EXPECT_EQ(without.points.size(), 3u);
+  EXPECT_EQ(pointAt(without, 0.01), nullptr);
+}
+
 TEST(Scan, ExtendedScanReusesItsCheckpointedPoints) {
   const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
   const auto params = carbon();

@@ -88,5 +88,63 @@ TEST(ScanReference, SharedReferenceIsTheOneAScanFindsByItself) {
   std::filesystem::remove(path);
 }
 
+// The chain's reference keeps its relaxation in its checkpoint as it goes: killed inside the T0
+// search, relaxScanReference continues it (the same T0 and energy to the tolerances), returns the
+// finished reference from the checkpoint without relaxing again, and replaces a checkpoint of
+// other settings.
+TEST(ScanReference, AnInterruptedReferenceContinuesFromItsCheckpoint) {
+  ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
+  tube.positions.row(2) *= 1.01;
+  tube.symmetry = Symmetry::screw(tube.symmetry.translation() * 1.01, tube.symmetry.twist(),
+                                  tube.symmetry.rotationOrder());
+  const auto params = carbon();
+  const auto calc = settings(16);
+  const ScanReference whole = relaxScanReference(tube, params, calc, stretch());
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("mesochain-reference-ckpt-" + std::to_string(::getpid()) + ".json")).string();
+  std::filesystem::remove(path);
+  ScanSettings s = stretch();
+  s.checkpointPath = path;
+  s.snapshotSeconds = 0;
+  struct Killed {};
+  const int killAt = whole.point.evaluations * 2 / 3;
+  ASSERT_GT(killAt, 5);
+  ScanSettings killed = s;
+  int calls = 0;
+  killed.relax.progress = [&](int evaluation, double, double) {
+    ++calls;
+    if (evaluation >= killAt) throw Killed{};
+  };
+  EXPECT_THROW(relaxScanReference(tube, params, calc, killed), Killed);
+  ASSERT_TRUE(std::filesystem::exists(path));
+  ScanSettings counted = s;
+  int firstEvaluation = 0;
+  counted.relax.progress = [&](int evaluation, double, double) {
+    if (calls++ == 0) firstEvaluation = evaluation;
+  };
+  calls = 0;
+  const ScanReference resumed = relaxScanReference(tube, params, calc, counted);
+  EXPECT_GT(calls, 0);
+  EXPECT_GT(firstEvaluation, 5) << "the reference started afresh instead of from its snapshot";
+  EXPECT_TRUE(resumed.point.converged);
+  EXPECT_NEAR(resumed.point.cell.symmetry.translation(), whole.point.cell.symmetry.translation(), 1e-4);
+  EXPECT_NEAR(resumed.point.energy, whole.point.energy, 1e-8);
+  EXPECT_EQ(resumed.identity, whole.identity);
+  // Finished: taken from the checkpoint, nothing evaluated.
+  calls = 0;
+  const ScanReference again = relaxScanReference(tube, params, calc, counted);
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(again.point.energy, resumed.point.energy);
+  EXPECT_EQ(again.point.cell.positions, resumed.point.cell.positions);
+  // Other settings: the checkpoint is replaced, the reference relaxed afresh.
+  ScanSettings other = counted;
+  other.relax.forceTolerance = 2e-5;
+  other.relax.axialTolerance = 2e-5;
+  const ScanReference fresh = relaxScanReference(tube, params, calc, other);
+  EXPECT_GT(calls, 0);
+  EXPECT_TRUE(fresh.point.converged);
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace mesochain::objective

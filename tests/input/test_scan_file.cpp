@@ -64,6 +64,11 @@ TEST(ScanFile, ReadsTwistAndBendWithUnits) {
   // Outputs go to the working folder (or -o), not beside the scan file.
   EXPECT_EQ(t.jsonPath, "out/t.json");
   EXPECT_EQ(t.settings.checkpointPath, "t.ckpt");
+  EXPECT_EQ(t.settings.snapshotSeconds, 600.0);  // the default: every 10 minutes inside a point
+  const ScanInput often = readScanFile(write(
+      "often.toml", "format = 1\ncell = \"helical.toml\"\nkind = \"twist\"\ntwist_deg_per_cell = [0.5]\n"
+                    "[output]\njson = \"t.json\"\ncheckpoint = \"t.ckpt\"\ncheckpoint_minutes = 2.5\n"));
+  EXPECT_EQ(often.settings.snapshotSeconds, 150.0);
   const ScanInput inFolder = readScanFile(kDir + "/twist.toml", "runs/a");
   EXPECT_EQ(inFolder.jsonPath, "runs/a/out/t.json");
   EXPECT_EQ(inFolder.settings.checkpointPath, "runs/a/t.ckpt");
@@ -147,6 +152,11 @@ TEST(ScanFile, BadInputNamesFileAndKey) {
   expectError(straight + "rotation_orders = [100]\nring_angular = 0\n" + out, "ring_angular");
   expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n[relax]\nforce_tolerance = -1\n" + out,
               "force_tolerance");
+  // Minutes between checkpoints inside a point: not negative, and only with a checkpoint.
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n" + out + "checkpoint = \"c.json\"\ncheckpoint_minutes = -1\n",
+              "checkpoint_minutes");
+  expectError(head + "kind = \"stretch\"\nstrains = [0.1]\n" + out + "checkpoint_minutes = 5\n",
+              "checkpoint_minutes");
   // A shared reference (docs/scan-file.md): a missing file names the key; a file that is no
   // reference names that file.
   expectError(head + "kind = \"stretch\"\nstrains = [0.1]\nreference = \"nope.json\"\n" + out, "reference");
