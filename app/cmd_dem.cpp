@@ -131,6 +131,20 @@ Command makeDemCommand() {
                                  st.elastic.samples, mdem::kElasticStrain,
                                  st.elastic.samples > 0 ? fmt::format(" (strain {:.4g} - {:.4g})", st.elastic.from, st.elastic.to) : "",
                                  mdem::kElasticMinimumSamples, mdem::kElasticStrain);
+      if (st.tensile) {
+        const mdem::TensileProperties& p = st.properties;
+        const auto strainOr = [](double v, const char* none) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : std::string(none); };
+        std::cout << fmt::format("ultimate strength {:.6g} MPa at strain {:.4g}; {}; failure strain (stress below {:.0f} % of the "
+                                 "ultimate) {}; toughness {:.6g} MJ/m^3 to the last sample{}; {}\n",
+                                 p.ultimateStress, p.ultimateStrain,
+                                 std::isfinite(p.yieldStrain)
+                                     ? fmt::format("{:.1f} % offset yield {:.6g} MPa at strain {:.4g}", 100 * mdem::kYieldOffset,
+                                                   p.yieldStress, p.yieldStrain)
+                                     : fmt::format("no {:.1f} % offset yield", 100 * mdem::kYieldOffset),
+                                 100 * mdem::kFailureFraction, strainOr(p.failureStrain, "not reached"), p.toughness,
+                                 std::isfinite(p.toughnessToFailure) ? fmt::format(", {:.6g} to failure", p.toughnessToFailure) : "",
+                                 st.tensileJson);
+      }
     }
     if (opt->profile) {
       std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",

@@ -194,7 +194,11 @@ class StageRun {
       out.initialStress = tensile_->samples().front().stress;
       out.crossSection = scene_.tensile.crossSection, out.gaugeLength = scene_.tensile.gaugeLength;
       out.elastic = fitElasticSlope(tensile_->samples(), 0.0, kElasticStrain);
+      out.properties = tensileProperties(tensile_->samples());
       out.tensileCsv = prepare(scene_.tensile.csv);
+      out.tensileJson = prepare(scene_.tensile.json);
+      writeTensilePropertiesJson(out.tensileJson, out.properties, scene_.tensile.crossSection, scene_.tensile.gaugeLength,
+                                 scene_.tensile.strainRate);
     }
     if (compression_) {
       const CompressionSpec& c = scene_.compression;
@@ -298,6 +302,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   if (!vtkPrefix.empty())
     for (const auto& [index, path] : vtkFrames(vtkPrefix))
       if (index >= frame) fs::remove(path, ec), r.removedStale.push_back(path.string());
+  // A tensile stage's properties JSON from an earlier run would look like this run's result.
+  for (std::size_t k = static_cast<std::size_t>(stageIndex); k < stages.size(); ++k)
+    if (stages[k].tensileStage && !stages[k].tensile.json.empty()) {
+      const fs::path json = dir / stages[k].tensile.json;
+      if (fs::exists(json, ec)) fs::remove(json, ec), r.removedStale.push_back(json.string());
+    }
   std::unique_ptr<AppendFile> xyz;
   if (!o.xyz.empty()) xyz = std::make_unique<AppendFile>(prepare(o.xyz), xyzBytes);
   std::unique_ptr<VtkSeries> series;

@@ -11,6 +11,7 @@
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/tensile.hpp"
+#include "mdem/tensile_properties.hpp"
 
 namespace mesochain::mdem {
 
@@ -46,7 +47,8 @@ struct StageSummary {
   double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;  // MPa
   double crossSection = 0.0, gaugeLength = 0.0;  // nm^2, nm
   ElasticFit elastic;            // the slope below 3 % strain (tensile.hpp)
-  std::string tensileCsv;
+  TensileProperties properties;  // yield, ultimate, failure, toughness (tensile_properties.hpp)
+  std::string tensileCsv, tensileJson;
   // Compression stages (compression.hpp): the cycles completed, the largest plate pressure (MPa),
   // the plates' stiffness (pN/nm^2), their gap at zero strain (nm) and area (nm^2).
   bool compression = false, cyclesDone = false;

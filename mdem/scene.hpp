@@ -87,6 +87,7 @@ struct TensileSpec {
   double contactGap = 0.5;      // nm, wall gap below which a pair counts as in contact
   double alignedAngle = 0.0;    // rad, aligned pairs cross below this angle
   std::string csv = "tensile.csv";
+  std::string json = "tensile.json";  // the properties (mdem/tensile_properties.hpp), at the end
   std::string png;              // "" = none
   double finalStrain = 0.0;      // > 0: the test (stage) ends when the strain reaches this
   // Filled by setUpTensile from the positions at the start of the test: the grips, the gauge

@@ -320,7 +320,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
 
 void readTensileTable(const TomlTable& t, TensileSpec& ts) {
   t.allowOnly({"axis", "grip_width_nm", "strain_rate_per_ns", "ramp_ns", "cross_section_nm2", "contact_gap_nm",
-               "aligned_angle_deg", "csv", "plot_png", "final_strain"});
+               "aligned_angle_deg", "csv", "json", "plot_png", "final_strain"});
   ts.enabled = true;
   const std::string axis = t.stringOr("axis", "x");
   if (axis != "x" && axis != "y") t.fail("axis", "\"" + axis + "\"", "\"x\" or \"y\" (in the film plane)");
@@ -334,6 +334,7 @@ void readTensileTable(const TomlTable& t, TensileSpec& ts) {
   if (ts.alignedAngle < 0.0 || ts.alignedAngle > 0.5 * units::kPi)
     t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
   ts.csv = t.stringOr("csv", ts.csv);
+  ts.json = t.stringOr("json", ts.json);
   ts.png = t.stringOr("plot_png", "");
   ts.finalStrain = t.has("final_strain") ? t.positive("final_strain") : 0.0;
 }
@@ -417,6 +418,7 @@ void readStages(const TomlTable& root, Scene& s) {
              "kind = \"tensile\" with its table, or neither");
     if (st.tensileStage) {
       st.tensile.csv = st.name + "-tensile.csv";
+      st.tensile.json = st.name + "-tensile.json";
       readTensileTable(t.requireTable("tensile"), st.tensile);
     }
     if (st.compressionStage != t.has("compression"))

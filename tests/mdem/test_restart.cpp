@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "contact_fixture.hpp"
 
@@ -325,6 +326,15 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   std::string header, row;
   std::getline(csv, header), std::getline(csv, row);
   EXPECT_EQ(row.substr(row.find(',') + 1, 2), "0,") << row;
+  // The pull's properties JSON (tensile_properties.hpp) holds the summary's peak.
+  {
+    std::ifstream json(dir_ / "reference" / "pull-tensile.json");
+    ASSERT_TRUE(json.good());
+    const nlohmann::json j = nlohmann::json::parse(json);
+    EXPECT_EQ(j["ultimate"]["stress_MPa"].get<double>(), reference.stages[1].peakStress);
+    EXPECT_EQ(j["final"]["strain"].get<double>(), reference.stages[1].finalStrain);
+    EXPECT_EQ(reference.stages[1].tensileJson, (dir_ / "reference" / "pull-tensile.json").string());
+  }
   // Interrupted inside the relax, just after the boundary's checkpoint, and inside the pull.
   expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
 }
