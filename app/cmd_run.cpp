@@ -28,6 +28,7 @@
 #include "input/xyz_file.hpp"
 #include "input/cell_calculator.hpp"
 #include "objective/drivers/relax.hpp"
+#include "objective/drivers/relax_checkpoint.hpp"
 
 namespace mesochain::app {
 
@@ -38,6 +39,17 @@ struct RunOptions {
   std::string structure;
   long unroll = 0;
   std::string plot;
+  // Task relax: where the relaxation stands, every checkpointMinutes (objective/drivers/relax_checkpoint.hpp).
+  std::string checkpoint;  // default <cell>-relax.checkpoint.json
+  double checkpointMinutes = 10.0;
+  bool resume = false;
+  long stopAfter = -1;  // evaluations, then stop with the checkpoint written (exit 4)
+};
+
+// Thrown from the snapshot callback once --stop-after evaluations are done (at the first accepted
+// step after them: a line search may take more than one).
+struct StoppedAsAsked {
+  int evaluations = 0;
 };
 
 // One accepted relaxation step as reported by the progress callback.
@@ -109,6 +121,20 @@ int runCell(const RunOptions& o) {
                                  ? std::filesystem::path(o.cellFile).stem().string() + "-relaxed"
                                  : std::string();
   if (!prefix.empty()) requireWritableOutput(prefix + ".xyz", cl, "option --structure");
+  const bool relaxing = in.task.type == "relax";
+  const std::string checkpoint =
+      !relaxing ? std::string()
+      : !o.checkpoint.empty() ? o.checkpoint
+                              : std::filesystem::path(o.cellFile).stem().string() + "-relax.checkpoint.json";
+  if (!relaxing && (!o.checkpoint.empty() || o.resume || o.stopAfter >= 0))
+    throw InputError(cl, o.resume ? "option --resume" : o.stopAfter >= 0 ? "option --stop-after" : "option --checkpoint",
+                     "task " + in.task.type + " in " + o.cellFile, "a cell file with task relax (only a relaxation is checkpointed)");
+  std::error_code ec;
+  const bool haveCheckpoint = relaxing && std::filesystem::exists(checkpoint, ec);
+  if (haveCheckpoint && !o.resume)
+    throw InputError(checkpoint, "", "the checkpoint of an interrupted relaxation of a cell",
+                     "--resume to continue it, or remove the file to start afresh");
+  if (relaxing) requireWritableOutput(checkpoint, cl, "option --checkpoint");
   if (o.unroll > 0 && !prefix.empty()) {
     const long long atoms = objective::unrolledAtomCount(in.cell, 0, o.unroll - 1);
     if (atoms > objective::kMaxUnrolledAtoms)
@@ -146,7 +172,26 @@ int runCell(const RunOptions& o) {
       std::cerr << fmt::format("{}relax: evaluation {:4d}  F = {:.10f} Ha  max|force| = {:.2e} Ha/Bohr{}",
                                tty ? "\r" : "", step, f, fmax, tty ? "   " : "\n");
     };
-    relax = std::make_unique<objective::RelaxOutcome>(objective::relax(calc, cell, rs));
+    const objective::RelaxInput identity{in.cell, calc.settings(), rs, objective::parameterIdentity(in)};
+    if (haveCheckpoint) {
+      rs.resumeFrom = objective::readRelaxCheckpoint(checkpoint, identity);
+      std::cerr << fmt::format("mesochain: continuing the relaxation from {} ({} evaluations, {} fixed-T relaxation(s) done)\n",
+                               checkpoint, rs.resumeFrom->evaluations, rs.resumeFrom->history.size());
+    }
+    rs.snapshotSeconds = o.stopAfter >= 0 ? 0.0 : 60.0 * o.checkpointMinutes;
+    rs.snapshot = [&](const objective::RelaxProgress& p) {
+      objective::writeRelaxCheckpoint(checkpoint, identity, p);
+      if (o.stopAfter >= 0 && p.evaluations >= o.stopAfter) throw StoppedAsAsked{p.evaluations};
+    };
+    try {
+      relax = std::make_unique<objective::RelaxOutcome>(objective::relax(calc, cell, rs));
+    } catch (const StoppedAsAsked& stop) {
+      if (tty) std::cerr << "\n";
+      std::cerr << fmt::format("mesochain: stopped after {} evaluations as asked; {} holds where the relaxation stands "
+                               "(rerun with --resume to continue)\n", stop.evaluations, checkpoint);
+      return kStoppedAsAsked;
+    }
+    std::filesystem::remove(checkpoint, ec);  // finished: the outputs below hold the result
     if (tty && !trace.evaluation.empty()) std::cerr << "\n";
     cell = relax->cell;
     result = relax->result;
@@ -192,6 +237,17 @@ Command makeRunCommand() {
         ->check(integerIn(1, 1000000000));
     s->add_option("--plot", opts->plot,
                   "task relax: write the relaxation history (max force, energy change) as PNG");
+    s->add_option("--checkpoint", opts->checkpoint,
+                  "task relax: where the relaxation stands, rewritten every --checkpoint-minutes (default "
+                  "<cell>-relax.checkpoint.json; removed when the relaxation ends)")
+        ->check(nonEmptyPath());
+    s->add_option("--checkpoint-minutes", opts->checkpointMinutes,
+                  "task relax: minutes between checkpoints (default 10; 0: every accepted step)")
+        ->check(CLI::Range(0.0, 1e9));
+    s->add_flag("--resume", opts->resume, "task relax: continue from the checkpoint when it exists");
+    s->add_option("--stop-after", opts->stopAfter,
+                  "task relax: stop after this many energy evaluations with the checkpoint written (exit 4)")
+        ->check(integerIn(1, 1000000000));
     *sub = s;
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };

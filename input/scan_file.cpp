@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "input/cell_calculator.hpp"
 #include "common/toml_file.hpp"
 #include "common/units.hpp"
 #include "common/toml_table.hpp"
@@ -30,22 +31,6 @@ std::string relativeTo(const std::string& scanFile, const std::string& path) {
   return (fs::path(scanFile).parent_path() / path).lexically_normal().string();
 }
 
-// The parameter tables by element pair and content, and the angular momenta used of them: part of the input hash, so a checkpoint
-// made with other tables is refused, while the same tables at another path (a moved or
-// re-cloned project, another build) are accepted.
-std::string identityOf(const CellInput& cell) {
-  std::string s;
-  for (const auto& [pair, file] : cell.parameterFiles) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream content;
-    content << in.rdbuf();
-    s += fmt::format("table {} {}\n", pair, content.str());
-  }
-  // The basis of each species (the tables hold up to d; l_max may restrict it).
-  for (const auto& [species, lmax] : cell.maxAngularMomentum)
-    s += fmt::format("max_angular_momentum {} {}\n", species, lmax);
-  return s;
-}
 
 }  // namespace
 
@@ -166,7 +151,7 @@ ScanInput readScanFile(const std::string& path, const std::string& outputDir) {
   }
   if (o->has("structures"))
     in.structurePrefix = inOutputDir(o->string("structures", "a path prefix for the relaxed cells"));
-  s.identity = identityOf(in.cell);
+  s.identity = parameterIdentity(in.cell);
   if (root.has("reference")) {
     // A reference relaxed before (`mesochain chain`'s reference stage): checked against this
     // scan's settings when the scan starts (runScan), relative to the scan file like `cell`.

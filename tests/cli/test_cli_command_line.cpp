@@ -154,6 +154,49 @@ TEST_F(CommandLine, SetIsCheckedByTheStrictReader) {
   EXPECT_NE(err.find("not a table"), std::string::npos) << err;
 }
 
+// A relaxation keeps where it stands in its checkpoint (docs/command-line.md, `mesochain run`):
+// stopped after 6 evaluations (exit 4), refused without --resume, continued with it to the
+// uninterrupted run's energy (to what the force tolerance allows), the checkpoint removed at the
+// end; a checkpoint of other settings is refused naming the setting; an energy task takes no
+// checkpoint options.
+TEST_F(CommandLine, RelaxationStopsAndResumesFromItsCheckpoint) {
+  std::string relax = cell(8);
+  relax.replace(relax.find("type = \"energy\""), std::string("type = \"energy\"").size(),
+                "type = \"relax\"\nforce_tolerance = 1e-5");
+  write("relax.toml", relax);
+  std::string out, err;
+  ASSERT_EQ(run("run relax.toml --json whole.json --structure whole", out, err), 0) << err;
+  const fs::path checkpoint = dir / "relax-relax.checkpoint.json";
+  EXPECT_FALSE(fs::exists(checkpoint)) << "a finished relaxation keeps no checkpoint";
+  EXPECT_EQ(run("run relax.toml --json part.json --structure part --stop-after 6", out, err), 4) << err;
+  ASSERT_TRUE(fs::exists(checkpoint)) << err;
+  EXPECT_FALSE(fs::exists(dir / "part.json"));
+  // At the first accepted step after 6 evaluations (a line search may take two).
+  const int done = readJson(checkpoint).at("in_progress").at("evaluations").get<int>();
+  EXPECT_GE(done, 6);
+  EXPECT_LE(done, 8);
+  EXPECT_NE(err.find(fmt::format("stopped after {} evaluations", done)), std::string::npos) << err;
+  // Without --resume: refused, nothing lost.
+  EXPECT_EQ(run("run relax.toml --json part.json --structure part", out, err), 2);
+  EXPECT_NE(err.find("--resume"), std::string::npos) << err;
+  ASSERT_TRUE(fs::exists(checkpoint));
+  // Other settings: refused, naming the setting with both values.
+  EXPECT_EQ(run("run relax.toml --json part.json --structure part --resume --set task.force_tolerance=2e-5", out, err), 2);
+  EXPECT_NE(err.find("scan.relax.force_tolerance (checkpoint 1.0000000000000001e-05, now 2.0000000000000002e-05)"),
+            std::string::npos) << err;
+  ASSERT_EQ(run("run relax.toml --json part.json --structure part --resume", out, err), 0) << err;
+  EXPECT_NE(err.find(fmt::format("continuing the relaxation from relax-relax.checkpoint.json ({} evaluations", done)),
+            std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(checkpoint));
+  const auto energy = [&](const char* name) {
+    return readJson(dir / name).at("energies_hartree").at("mermin_free").at("per_cell").get<double>();
+  };
+  EXPECT_NEAR(energy("part.json"), energy("whole.json"), 1e-8);
+  // An energy task has nothing to checkpoint.
+  EXPECT_EQ(run("run cell.toml --resume", out, err), 2);
+  EXPECT_NE(err.find("task relax"), std::string::npos) << err;
+}
+
 // --unset removes keys before the reader sees the file (and before --set): a relaxation input
 // becomes an energy input, which --set alone cannot do (the relax keys are errors then).
 TEST_F(CommandLine, UnsetRemovesKeysBeforeSet) {
