@@ -1,5 +1,10 @@
 // `mesochain dem SCENE.toml`: runs a mesoscopic distinct element scene (docs/scene-file.md).
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
+
+#include <unistd.h>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -12,6 +17,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
 #include "mdem/contacts/film_statistics.hpp"
@@ -21,6 +27,32 @@
 namespace mesochain::app {
 
 namespace {
+// Set by SIGINT / SIGTERM: the run stops at its next step boundary with a checkpoint (a second
+// signal ends the process at once, the default action restored by the first).
+std::atomic<bool> stopRequested{false};
+extern "C" void requestStop(int signal) {
+  stopRequested.store(true);
+  std::signal(signal, SIG_DFL);
+  static const char note[] =
+      "\nmesochain: stopping at the next step boundary (within 1000 steps) with a checkpoint; interrupt again to quit "
+      "at once\n";
+  [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, note, sizeof note - 1);  // async-signal-safe
+}
+
+// The share of the run's wall time in each phase (--profile).
+void printProfile(const mdem::RunSummary& r, std::size_t elements) {
+  const long stepped = r.steps - std::max(0L, r.resumedFromStep);
+  std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",
+                           r.wallSeconds, r.wallSeconds > 0 ? static_cast<double>(elements) * stepped / r.wallSeconds : 0.0);
+  double timed = 0.0;
+  for (const auto& [phase, sec] : r.profile.seconds) timed += sec;
+  const auto share = [&r](double sec) { return r.wallSeconds > 0 ? 100.0 * sec / r.wallSeconds : 0.0; };
+  for (const auto& [phase, sec] : r.profile.seconds)
+    std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", phase, sec, share(sec));
+  std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", "other (serial loop, progress)", r.wallSeconds - timed,
+                           share(r.wallSeconds - timed));
+}
+
 struct DemOptions {
   std::string scene;
   std::string outputDir;
@@ -77,8 +109,23 @@ Command makeDemCommand() {
     // The steps done before a resume are not timed here: the ETA extrapolates those run since.
     options.resumedAt = [&bar](double fraction) { bar.skip(static_cast<int>(std::lround(fraction * 100))); };
     options.status = [&status](const std::string& line) { status = line; };
+    options.stopRequested = &stopRequested;
+    stopRequested.store(false);
+    const auto previousInt = std::signal(SIGINT, requestStop);
+    const auto previousTerm = std::signal(SIGTERM, requestStop);
     const mdem::RunSummary r = mdem::runScene(scene, dir, progress, options);
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
     bar.finish();
+    if (r.stoppedOnRequest) {
+      std::cout << fmt::format("stopped on request at step {} (t = {:.6g} ns); the checkpoint {} holds the run: "
+                               "the same command with --resume (`mesochain dem {} -o {} --resume`, and any --set "
+                               "given) continues it bit for bit\n",
+                               r.steps, r.time, (std::filesystem::path(dir) / scene.output.checkpoint).string(),
+                               opt->scene, dir);
+      if (opt->profile) printProfile(r, scene.bodies.size());
+      return kStoppedAsAsked;
+    }
     if (!r.removedStale.empty())
       std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
                                r.removedStale.front());
@@ -146,17 +193,7 @@ Command makeDemCommand() {
                                  st.tensileJson);
       }
     }
-    if (opt->profile) {
-      std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",
-                               r.wallSeconds, r.wallSeconds > 0 ? static_cast<double>(scene.bodies.size()) *
-                                                                      (r.steps - std::max(0L, r.resumedFromStep)) / r.wallSeconds : 0.0);
-      double timed = 0.0;
-      for (const auto& [phase, sec] : r.profile.seconds) timed += sec;
-      for (const auto& [phase, sec] : r.profile.seconds)
-        std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", phase, sec, r.wallSeconds > 0 ? 100.0 * sec / r.wallSeconds : 0.0);
-      std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", "other (serial loop, progress)", r.wallSeconds - timed,
-                               r.wallSeconds > 0 ? 100.0 * (r.wallSeconds - timed) / r.wallSeconds : 0.0);
-    }
+    if (opt->profile) printProfile(r, scene.bodies.size());
     if (!scene.output.plotPng.empty())
       std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";
     return 0;

@@ -406,6 +406,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       if (o.checkpointEvery > 0) next = std::min(next, nextMultiple(k0, o.checkpointEvery));
       if (byMinutes) next = std::min(next, k0 + 1000);  // look at the clock at least every 1000 steps
       if (options.interruptAfter >= 0) next = std::min(next, std::max(k0 + 1, options.interruptAfter));
+      if (options.stopRequested) next = std::min(next, k0 + 1000);  // look at the request at least every 1000 steps
       const auto stepping = Clock::now();
       sim.run(next - k0);
       const auto outputs = Clock::now();
@@ -429,6 +430,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       const bool due = (o.checkpointEvery > 0 && k % o.checkpointEvery == 0) ||
                        (byMinutes && Clock::now() - lastCheckpoint > std::chrono::duration<double>(60.0 * o.checkpointMinutes));
       if (due && !last && !stop) checkpoint();  // (a finished stage moves on at once)
+      if (!last && !stop && options.stopRequested && options.stopRequested->load()) {
+        // This step's outputs are written; the checkpoint holds the state they continue from.
+        if (!due) checkpoint();
+        r.interrupted = r.stoppedOnRequest = true;
+        break;
+      }
       if (progress && (k % every == 0 || last)) {
         if (options.status) options.status(run->status());
         progress(std::min(1.0, static_cast<double>(k) / totalSteps));

@@ -1,6 +1,7 @@
 #pragma once
 // Runs a loaded scene with its outputs: the loop the `mesochain dem` command drives, with
 // checkpoints and resume (checkpoint.hpp, docs/scene-file.md "Restart").
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <string>
@@ -25,6 +26,10 @@ struct RunOptions {
   // Tests: stop as if killed once this many steps are done (no final outputs, the checkpoint
   // left as it was).
   long interruptAfter = -1;
+  // When set (e.g. by a SIGINT / SIGTERM handler), the run stops at the next step boundary it
+  // visits (within 1000 steps), writes its checkpoint and returns with stoppedOnRequest: a
+  // --resume continues bit for bit. Nothing computed since the last checkpoint is lost.
+  const std::atomic<bool>* stopRequested = nullptr;
   // Time the phases of the steps and the outputs (RunSummary::profile).
   bool profile = false;
   // Called once when a run resumes, with the fraction of its steps the checkpoint had done
@@ -65,7 +70,8 @@ struct RunSummary {
   long steps = 0;
   double time = 0.0;             // ns
   bool stoppedByCriterion = false;
-  bool interrupted = false;      // RunOptions::interruptAfter reached
+  bool interrupted = false;      // RunOptions::interruptAfter reached, or stopped on request
+  bool stoppedOnRequest = false; // RunOptions::stopRequested: the checkpoint was written
   long resumedFromStep = -1;     // >= 0: resumed from a checkpoint at this step
   long checkpoints = 0;          // written by this invocation
   std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting

@@ -14,6 +14,8 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <atomic>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -179,6 +181,42 @@ TEST_F(Restart, InterruptedRunsResumeBitForBitOnOneAndTwoThreads) {
     expectSameOutputs("reference", out);
   }
   omp_set_num_threads(saved);
+}
+
+// A stop request (what `mesochain dem` sets on SIGINT / SIGTERM) ends the run at its next step
+// boundary with a checkpoint although the scene writes none on its own (checkpoint_every = 0,
+// checkpoint_minutes = 0), and --resume continues it to the uninterrupted run's outputs, byte
+// for byte. Without a request the same options change nothing.
+TEST_F(Restart, AStopRequestWritesACheckpointAndResumesBitForBit) {
+  std::ofstream(scenePath_) << sceneText(kSteps, 0);
+  std::atomic<bool> flag{false};
+  RunOptions watched;
+  watched.stopRequested = &flag;
+  const RunSummary reference = run("reference", watched);
+  ASSERT_FALSE(reference.interrupted);
+  EXPECT_FALSE(fs::exists(dir_ / "reference" / "checkpoint.mdem"));
+  const RunSummary plain = run("plain");
+  EXPECT_EQ(plain.finalEnergies.total(), reference.finalEnergies.total());
+  // The request arrives at about a third of the run (from the progress callback, as a signal
+  // would arrive between steps).
+  const auto progress = [&flag](double fraction) {
+    if (fraction > 0.37) flag.store(true);
+  };
+  const RunSummary stopped = runScene(loadScene(scenePath_), (dir_ / "stopped").string(), progress, watched);
+  ASSERT_TRUE(stopped.stoppedOnRequest);
+  EXPECT_TRUE(stopped.interrupted);
+  EXPECT_GT(stopped.steps, kSteps / 3);
+  EXPECT_LT(stopped.steps, kSteps);
+  EXPECT_EQ(stopped.checkpoints, 1);
+  ASSERT_TRUE(fs::exists(dir_ / "stopped" / "checkpoint.mdem"));
+  RunOptions resume;
+  resume.resume = true;
+  const RunSummary r = run("stopped", resume);
+  EXPECT_EQ(r.resumedFromStep, stopped.steps);
+  EXPECT_EQ(r.steps, reference.steps);
+  EXPECT_EQ(r.finalEnergies.total(), reference.finalEnergies.total());
+  EXPECT_EQ(r.finalStress, reference.finalStress);
+  expectSameOutputs("reference", "stopped");
 }
 
 // A resumed run tells the progress display how much the checkpoint had done (ProgressBar::skip),
