@@ -28,6 +28,7 @@
 #include "mdem/contacts/vdw_kernel_isa.hpp"
 #include "mdem/checkpoint.hpp"
 #include "mdem/lammps_export.hpp"
+#include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
 #include "mdem/simulation.hpp"
 #include "mdem/units.hpp"
@@ -53,6 +54,7 @@ struct NetworkBenchOptions {
   std::string scene;                 // a scene file instead of the generated networks
   double relaxNs = 0.0;              // > 0: relax (local damping) this long first, then measure
   std::string relaxedState;          // with relaxNs: the relaxed state's checkpoint, read if present
+  std::string stateFromRun;          // a `mesochain dem` checkpoint of the --scene file's run: its elements' state
   std::string coarsenTo;             // with --scene: a scene whose element type is twice as long (bench_network_coarsen.hpp)
   bool coarsenRelaxed = false;       // coarsen after --relax-ns (the relaxed film), not before
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
@@ -272,8 +274,16 @@ void printAlignedWindowRows(const mdem::TubePairPotential& potential, const std:
 }
 
 // --scene, coarsened to --coarsen-to's elements when given.
+// With --state-from-run, the elements start where that run's checkpoint has them.
 mdem::Scene sceneFile(const NetworkBenchOptions& o) {
   mdem::Scene s = mdem::loadScene(o.scene);
+  if (!o.stateFromRun.empty()) {
+    const mdem::CheckpointState st = mdem::readCheckpointState(s, o.stateFromRun);
+    s.bodies = st.bodies;
+    const mdem::Simulation sim(s);
+    std::cout << fmt::format("state of the run's checkpoint {} (stage {}, step {}, t = {:.4g} ns): {}\n", o.stateFromRun,
+                             st.stage, st.step, st.time, contactSummary(sim));
+  }
   return o.coarsenTo.empty() || o.coarsenRelaxed ? s : coarsenedFilm(s, o.coarsenTo);
 }
 
@@ -447,6 +457,10 @@ Command makeBenchNetworkCommand() {
         ->check(CLI::PositiveNumber);
     (*sub)->add_option("--relaxed-state", opt->relaxedState,
                        "with --relax-ns: checkpoint of the relaxed state, read when it exists, else written");
+    (*sub)->add_option("--state-from-run", opt->stateFromRun,
+                       "with --scene: start from the state in this checkpoint of a `mesochain dem` run of that scene "
+                       "(e.g. a film relaxed for nanoseconds: RUN/checkpoint.mdem)")
+        ->check(CLI::ExistingFile);
     (*sub)->add_option("--aligned-window", opt->alignedWindow,
                        "[vdw_contact] aligned_window_deg of the measured runs (after any relaxation); with "
                        "--kernel-points: the aligned path's window")

@@ -240,6 +240,24 @@ class StageRun {
 
 }  // namespace
 
+CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath) {
+  const CheckpointFile file(checkpointPath, scene);
+  BinaryReader pre = file.prelude();
+  CheckpointState out;
+  out.stage = pre.read<std::int64_t>();
+  const double stageTime = pre.read<double>();
+  const long stageStep = pre.read<std::int64_t>();
+  const std::vector<StageSpec> stages = stagesOf(scene);
+  if (out.stage < 0 || out.stage >= static_cast<std::int64_t>(stages.size())) pre.fail("a stage the scene does not have");
+  Bodies start = scene.bodies;
+  readBodiesFrom(pre, start);
+  Simulation sim(stageScene(scene, stages[out.stage], out.stage, start, stageTime, scene.stages.empty()), stageTime, stageStep);
+  file.restore(sim);
+  out.bodies = sim.state().bodies;
+  out.time = sim.time(), out.step = sim.stepCount();
+  return out;
+}
+
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                     const std::function<void(double)>& progress, const RunOptions& options) {
   const OutputSpec& o = scene.output;

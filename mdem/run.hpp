@@ -91,6 +91,19 @@ struct RunSummary {
   double initialStress = 0.0, finalStrain = 0.0, finalStress = 0.0, peakStress = 0.0;
 };
 
+// The state a run's checkpoint holds: every element at the checkpoint's step, the stage it was
+// in. For tools that start from a run's state elsewhere (mesochain-bench network --state-from-run:
+// the relaxed film of a long run as a benchmark case). `scene` is the run's scene file (the
+// checkpoint's fingerprint is checked against it); the stage's simulation is rebuilt as a resumed
+// run rebuilds it and restored from the file. InputError naming the file otherwise.
+struct CheckpointState {
+  Bodies bodies;
+  double time = 0.0;  // ns
+  long step = 0;
+  std::int64_t stage = 0;
+};
+CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath);
+
 // Progress callback receives the fraction of the maximum step count done.
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                     const std::function<void(double)>& progress, const RunOptions& options = {});

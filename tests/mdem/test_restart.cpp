@@ -183,6 +183,30 @@ TEST_F(Restart, InterruptedRunsResumeBitForBitOnOneAndTwoThreads) {
   omp_set_num_threads(saved);
 }
 
+// readCheckpointState gives the elements as the run had them at its checkpoint's step: the same
+// bits as a simulation of the scene stepped there by hand; another scene's checkpoint is refused.
+TEST_F(Restart, CheckpointStateIsTheRunsStateAtItsStep) {
+  RunOptions kill;
+  kill.interruptAfter = 2 * kEvery + 5;  // the last checkpoint is at step 2 kEvery
+  ASSERT_TRUE(run("killed", kill).interrupted);
+  const Scene scene = loadScene(scenePath_);
+  const CheckpointState st = readCheckpointState(scene, (dir_ / "killed" / "checkpoint.mdem").string());
+  EXPECT_EQ(st.step, 2 * kEvery);
+  EXPECT_EQ(st.stage, 0);
+  Simulation sim(scene);
+  sim.run(2 * kEvery);
+  EXPECT_EQ(st.time, sim.time());
+  ASSERT_EQ(st.bodies.size(), sim.bodies().size());
+  for (int i = 0; i < sim.bodies().size(); ++i) {
+    ASSERT_EQ(st.bodies.position[i], sim.bodies().position[i]) << i;
+    ASSERT_EQ(st.bodies.velocity[i], sim.bodies().velocity[i]) << i;
+    const Quat &a = st.bodies.orientation[i], &b = sim.bodies().orientation[i];
+    ASSERT_TRUE(a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z) << i;
+  }
+  std::ofstream(scenePath_) << sceneText(kSteps + 1, kEvery);
+  EXPECT_THROW(readCheckpointState(loadScene(scenePath_), (dir_ / "killed" / "checkpoint.mdem").string()), InputError);
+}
+
 // A stop request (what `mesochain dem` sets on SIGINT / SIGTERM) ends the run at its next step
 // boundary with a checkpoint although the scene writes none on its own (checkpoint_every = 0,
 // checkpoint_minutes = 0), and --resume continues it to the uninterrupted run's outputs, byte
