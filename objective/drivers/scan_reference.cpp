@@ -41,9 +41,16 @@ ScanReference relaxScanReference(const ObjectiveCell& cell,
   out.identity = referenceIdentity(cell, calculator, settings);
   s.resume = !s.checkpointPath.empty() && std::filesystem::exists(s.checkpointPath);
   if (s.resume) {
-    const ScanCheckpoint old = readScanCheckpoint(s.checkpointPath, cell);
-    if (old.inputHash != scanInputHash(cell, calculator, s)) {
-      std::cerr << fmt::format("mesochain: note: {} holds a reference of other settings; relaxing afresh\n",
+    ScanCheckpoint old;
+    bool same = false;
+    try {
+      old = readScanCheckpoint(s.checkpointPath, cell);
+      same = old.inputHash == scanInputHash(cell, calculator, s);
+    } catch (const InputError&) {
+      same = false;  // unreadable, or of a cell with other atoms
+    }
+    if (!same) {
+      std::cerr << fmt::format("mesochain: note: {} holds no reference of these settings; relaxing afresh\n",
                                s.checkpointPath);
       s.resume = false;
     } else if (old.completed.count(0)) {

@@ -4,6 +4,7 @@
 // from it gives the same curve as one that relaxes its own; a reference of other settings is
 // refused, naming the file and the setting.
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <unistd.h>
@@ -143,6 +144,11 @@ TEST(ScanReference, AnInterruptedReferenceContinuesFromItsCheckpoint) {
   const ScanReference fresh = relaxScanReference(tube, params, calc, other);
   EXPECT_GT(calls, 0);
   EXPECT_TRUE(fresh.point.converged);
+  // A file that is no checkpoint (or one of a cell with other atoms): replaced too, not an error.
+  std::ofstream(path) << "not a checkpoint\n";
+  calls = 0;
+  EXPECT_TRUE(relaxScanReference(tube, params, calc, counted).point.converged);
+  EXPECT_GT(calls, 0);
   std::filesystem::remove(path);
 }
 
