@@ -88,6 +88,24 @@ void carryEffectStates(const Simulation& from, Simulation& to) {
 }
 
 // One stage's run: its simulation and outputs.
+// Where a checkpoint's stage began (its prelude, StageRun::savePrelude): the stage's index, the
+// time, step and bodies it started from.
+struct StageStart {
+  std::int64_t index = 0;
+  double time = 0.0;
+  long step = 0;
+  Bodies bodies;
+};
+StageStart readStageStart(const CheckpointFile& file, const Scene& scene, std::size_t stageCount) {
+  BinaryReader pre = file.prelude();
+  StageStart s;
+  s.index = pre.read<std::int64_t>(), s.time = pre.read<double>(), s.step = pre.read<std::int64_t>();
+  if (s.index < 0 || s.index >= static_cast<std::int64_t>(stageCount)) pre.fail("a stage the scene does not have");
+  s.bodies = scene.bodies;
+  readBodiesFrom(pre, s.bodies);
+  return s;
+}
+
 class StageRun {
  public:
   StageRun(const Scene& base, const StageSpec& spec, Scene scene, const fs::path& dir, std::int64_t stageIndex,
@@ -242,17 +260,13 @@ class StageRun {
 
 CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath) {
   const CheckpointFile file(checkpointPath, scene);
-  BinaryReader pre = file.prelude();
-  CheckpointState out;
-  out.stage = pre.read<std::int64_t>();
-  const double stageTime = pre.read<double>();
-  const long stageStep = pre.read<std::int64_t>();
   const std::vector<StageSpec> stages = stagesOf(scene);
-  if (out.stage < 0 || out.stage >= static_cast<std::int64_t>(stages.size())) pre.fail("a stage the scene does not have");
-  Bodies start = scene.bodies;
-  readBodiesFrom(pre, start);
-  Simulation sim(stageScene(scene, stages[out.stage], out.stage, start, stageTime, scene.stages.empty()), stageTime, stageStep);
+  const StageStart start = readStageStart(file, scene, stages.size());
+  Simulation sim(stageScene(scene, stages[start.index], start.index, start.bodies, start.time, scene.stages.empty()),
+                 start.time, start.step);
   file.restore(sim);
+  CheckpointState out;
+  out.stage = start.index;
   out.bodies = sim.state().bodies;
   out.time = sim.time(), out.step = sim.stepCount();
   return out;
@@ -309,10 +323,8 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   Bodies stageBodies = scene.bodies;
   std::int64_t xyzBytes = -1, frame = 0;
   if (resumed) {
-    BinaryReader pre = resumed->prelude();
-    stageIndex = pre.read<std::int64_t>(), stageTime = pre.read<double>(), stageStep = pre.read<std::int64_t>();
-    if (stageIndex < 0 || stageIndex >= static_cast<std::int64_t>(stages.size())) pre.fail("a stage the scene does not have");
-    readBodiesFrom(pre, stageBodies);
+    StageStart start = readStageStart(*resumed, scene, stages.size());
+    stageIndex = start.index, stageTime = start.time, stageStep = start.step, stageBodies = std::move(start.bodies);
   }
   BinaryReader tail = resumed ? resumed->tail() : BinaryReader(nullptr, 0, checkpointPath);
   if (resumed) xyzBytes = tail.read<std::int64_t>(), frame = tail.read<std::int64_t>();

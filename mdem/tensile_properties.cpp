@@ -1,6 +1,8 @@
 #include "mdem/tensile_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +15,19 @@ namespace {
 
 // The strain where f changes sign from f0 >= 0 at e0 to f1 < 0 at e1 (linear between them).
 double crossing(double e0, double f0, double e1, double f1) { return e0 + (e1 - e0) * f0 / (f0 - f1); }
+
+// The trapezoid sum of stress d(strain) over the samples, up to strain `upTo` (the interval that
+// holds it cut there, linearly).
+double workUpTo(const std::vector<TensileSample>& s, double upTo) {
+  double w = 0.0;
+  for (std::size_t k = 1; k < s.size() && s[k - 1].strain < upTo; ++k) {
+    const double e0 = s[k - 1].strain, e1 = std::min(s[k].strain, upTo);
+    if (e1 == e0) continue;  // a repeated strain: no width, no work
+    const double s1 = s[k - 1].stress + (e1 - e0) / (s[k].strain - e0) * (s[k].stress - s[k - 1].stress);
+    w += 0.5 * (s[k - 1].stress + s1) * (e1 - e0);
+  }
+  return w;
+}
 
 nlohmann::json numberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
@@ -50,20 +65,8 @@ TensileProperties tensileProperties(const std::vector<TensileSample>& s) {
         p.failureStrain = crossing(s[k - 1].strain, s[k - 1].stress - threshold, s[k].strain, s[k].stress - threshold);
         break;
       }
-  for (std::size_t k = 1; k < s.size(); ++k) {
-    const double e0 = s[k - 1].strain, e1 = s[k].strain;
-    const double w = 0.5 * (s[k - 1].stress + s[k].stress) * (e1 - e0);
-    p.toughness += w;
-    if (std::isfinite(p.failureStrain) && e0 < p.failureStrain) {
-      if (e1 <= p.failureStrain) {
-        p.toughnessToFailure = (std::isnan(p.toughnessToFailure) ? 0.0 : p.toughnessToFailure) + w;
-      } else {  // the part of this interval below the failure strain
-        const double f = (p.failureStrain - e0) / (e1 - e0), sf = s[k - 1].stress + f * (s[k].stress - s[k - 1].stress);
-        p.toughnessToFailure =
-            (std::isnan(p.toughnessToFailure) ? 0.0 : p.toughnessToFailure) + 0.5 * (s[k - 1].stress + sf) * (p.failureStrain - e0);
-      }
-    }
-  }
+  p.toughness = workUpTo(s, std::numeric_limits<double>::infinity());
+  if (std::isfinite(p.failureStrain)) p.toughnessToFailure = workUpTo(s, p.failureStrain);
   return p;
 }
 

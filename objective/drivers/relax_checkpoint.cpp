@@ -3,7 +3,6 @@
 #include "common/errors.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_checkpoint.hpp"
-#include "objective/drivers/scan_reference.hpp"
 
 namespace mesochain::objective {
 
@@ -38,15 +37,10 @@ void writeRelaxCheckpoint(const std::string& path, const RelaxInput& in, const R
 std::shared_ptr<const RelaxProgress> readRelaxCheckpoint(const std::string& path, const RelaxInput& in) {
   const ScanSettings s = asScan(in);
   const ScanCheckpoint c = readScanCheckpoint(path, in.cell);
-  const char* expected = "the checkpoint of this relaxation (the same cell, calculator, relaxation and tables)";
-  if (c.inputHash != scanInputHash(in.cell, in.calculator, s)) {
-    const std::string changed = settingChanges(c.settings, scanIdentity(in.cell, in.calculator, s), "checkpoint");
-    throw InputError(path, "key settings",
-                     changed.empty() ? std::string("a checkpoint of other settings") : "a checkpoint of other settings, changed: " + changed,
-                     expected);
-  }
+  requireCheckpointOfThisInput(path, c, in.cell, in.calculator, s, "remove it to start the relaxation afresh");
   if (!c.inProgress || c.planSize != 1)
-    throw InputError(path, "key in_progress", "no relaxation in progress (a scan's checkpoint?)", expected);
+    throw InputError(path, "key in_progress", "no relaxation in progress (a scan's checkpoint?)",
+                     "the checkpoint of this relaxation (the same cell, calculator, relaxation and tables)");
   return std::make_shared<const RelaxProgress>(c.inProgress->progress);
 }
 

@@ -52,6 +52,13 @@ struct PlannedPoint {
 // and kind; planSize = plan.size().
 ScanCheckpoint reuseCheckpoint(ScanCheckpoint old, const std::vector<PlannedPoint>& plan);
 
+// Throws InputError naming `path` unless `old` was written for this input (scanInputHash of
+// cell, calculator and settings): each changed setting with both values, or why a checkpoint of
+// an earlier version cannot tell. `fix` says how to go on (e.g. "remove it to start afresh").
+void requireCheckpointOfThisInput(const std::string& path, const ScanCheckpoint& old, const ObjectiveCell& cell,
+                                  const dftb::CalculatorSettings& calculator, const ScanSettings& settings,
+                                  const std::string& fix);
+
 // Writes `checkpoint` (species taken from `speciesSource`, which has the cell's atoms).
 void writeScanCheckpoint(const std::string& path, const ScanCheckpoint& checkpoint,
                          const ObjectiveCell& speciesSource);

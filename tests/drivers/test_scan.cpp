@@ -43,6 +43,14 @@ ScanSettings stretchSettings() {
   return s;
 }
 
+// stretchSettings at 1e-5 Ha/Bohr (forces and axial force): the checkpoint tests' scan.
+ScanSettings stretchAt1e5() {
+  ScanSettings s = stretchSettings();
+  s.relax.forceTolerance = 1e-5;
+  s.relax.axialTolerance = 1e-5;
+  return s;
+}
+
 // Rings of a straight cell: 4 angular samples, 1e-4 Ha/Bohr, the cell's T kept.
 ScanSettings ringSettings(std::vector<int> rotationOrders) {
   ScanSettings s;
@@ -163,9 +171,7 @@ TEST(Scan, ResumedScanEqualsUninterruptedScan) {
   const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
   const auto params = carbon();
   const auto calc = settings(16);
-  ScanSettings s = stretchSettings();
-  s.relax.forceTolerance = 1e-5;
-  s.relax.axialTolerance = 1e-5;
+  ScanSettings s = stretchAt1e5();
   const ScanResult full = runScan(tube, params, calc, s);
   const std::string path = resumeFromFreshCheckpoint(s, "resume.json");
   s.stopAfter = 2;
@@ -265,9 +271,7 @@ TEST(Scan, ResumesThePointInProgress) {
   const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
   const auto params = carbon();
   const auto calc = settings(16);
-  ScanSettings s = stretchSettings();
-  s.relax.forceTolerance = 1e-5;
-  s.relax.axialTolerance = 1e-5;
+  ScanSettings s = stretchAt1e5();
   const ScanResult full = runScan(tube, params, calc, s);
   const std::string path = resumeFromFreshCheckpoint(s, "in-progress.json");
   s.snapshotSeconds = 0;
@@ -334,9 +338,7 @@ TEST(Scan, ExtendedScanReusesItsCheckpointedPoints) {
   const ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
   const auto params = carbon();
   const auto calc = settings(16);
-  ScanSettings s = stretchSettings();
-  s.relax.forceTolerance = 1e-5;
-  s.relax.axialTolerance = 1e-5;
+  ScanSettings s = stretchAt1e5();
   s.values = {0.01, -0.01};
   const std::string path = resumeFromFreshCheckpoint(s, "extend.json");
   const ScanResult first = runScan(tube, params, calc, s);

@@ -33,12 +33,17 @@ ScanSettings stretch() {
   return s;
 }
 
-TEST(ScanReference, SharedReferenceIsTheOneAScanFindsByItself) {
-  // The (5,5) tube 1 % longer than its T0, so that the T0 search has work to do.
+// The (5,5) tube 1 % longer than its T0, so that the T0 search has work to do.
+ObjectiveCell stretchedTube() {
   ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
   tube.positions.row(2) *= 1.01;
   tube.symmetry = Symmetry::screw(tube.symmetry.translation() * 1.01, tube.symmetry.twist(),
                                   tube.symmetry.rotationOrder());
+  return tube;
+}
+
+TEST(ScanReference, SharedReferenceIsTheOneAScanFindsByItself) {
+  const ObjectiveCell tube = stretchedTube();
   const auto params = carbon();
   const auto calc = settings(16);
   const ScanResult own = runScan(tube, params, calc, stretch());
@@ -94,10 +99,7 @@ TEST(ScanReference, SharedReferenceIsTheOneAScanFindsByItself) {
 // finished reference from the checkpoint without relaxing again, and replaces a checkpoint of
 // other settings.
 TEST(ScanReference, AnInterruptedReferenceContinuesFromItsCheckpoint) {
-  ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
-  tube.positions.row(2) *= 1.01;
-  tube.symmetry = Symmetry::screw(tube.symmetry.translation() * 1.01, tube.symmetry.twist(),
-                                  tube.symmetry.rotationOrder());
+  const ObjectiveCell tube = stretchedTube();
   const auto params = carbon();
   const auto calc = settings(16);
   const ScanReference whole = relaxScanReference(tube, params, calc, stretch());

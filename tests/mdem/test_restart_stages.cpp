@@ -1,0 +1,268 @@
+// Restart across stages (run.hpp, [[stages]]): relax then pull, multiple time stepping, stages
+// given as durations and compression cycles resume bit for bit from a checkpoint at any step;
+// stage errors name their key; --profile names every effect's phases. The fixture:
+// restart_fixture.hpp.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "restart_fixture.hpp"
+
+namespace mesochain::mdem {
+namespace {
+
+using namespace restart_testing;
+
+// Stages: relax (with local damping named for that stage only) then pull, in one scene.
+std::string stagedScene(long relaxSteps, long pullSteps) {
+  std::string text = sceneText(0, 20);
+  text.replace(text.find("effects = [\"bonds\", \"vdw_contact\", \"contact_damping\", \"local_damping\"]"),
+               std::string("effects = [\"bonds\", \"vdw_contact\", \"contact_damping\", \"local_damping\"]").size(),
+               "effects = [\"bonds\", \"vdw_contact\", \"contact_damping\"]");
+  text.replace(text.find("steps = 0\n"), 10, "");
+  text.replace(text.find("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n"),
+               std::string("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n").size(), "");
+  const std::size_t tensile = text.find("[tensile]");
+  text = text.substr(0, tensile);
+  text += fmt::format(R"([[stages]]
+name = "relax"
+steps = {}
+add_effects = ["local_damping"]
+energies_every = 20
+plot_png = "relax.png"
+[[stages]]
+name = "pull"
+kind = "tensile"
+steps = {}
+energies_every = 20
+[stages.tensile]
+grip_width_nm = 3.0
+strain_rate_per_ns = 0.5
+ramp_ns = 0.01
+final_strain = 0.5
+)",
+                      relaxSteps, pullSteps);
+  return text;
+}
+
+TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  EXPECT_EQ(reference.stages[0].name, "relax");
+  EXPECT_EQ(reference.stages[0].steps, 90);
+  EXPECT_TRUE(reference.stages[1].tensile);
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax-energies.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax.png"));
+  // The pull's strain counts from the grips' places at its start: 0 in its first row.
+  std::ifstream csv(dir_ / "reference" / "pull-tensile.csv");
+  std::string header, row;
+  std::getline(csv, header), std::getline(csv, row);
+  EXPECT_EQ(row.substr(row.find(',') + 1, 2), "0,") << row;
+  // The pull's properties JSON (tensile_properties.hpp) holds the summary's peak.
+  {
+    std::ifstream json(dir_ / "reference" / "pull-tensile.json");
+    ASSERT_TRUE(json.good());
+    const nlohmann::json j = nlohmann::json::parse(json);
+    EXPECT_EQ(j["ultimate"]["stress_MPa"].get<double>(), reference.stages[1].peakStress);
+    EXPECT_EQ(j["final"]["strain"].get<double>(), reference.stages[1].finalStrain);
+    EXPECT_EQ(reference.stages[1].tensileJson, (dir_ / "reference" / "pull-tensile.json").string());
+  }
+  // Interrupted inside the relax, just after the boundary's checkpoint, and inside the pull.
+  expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
+}
+
+TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
+  // vdW contacts every 2 steps; the pull stage starts its outer cycle at step 91, so its
+  // checkpoints (100, 140) and the kills (35, 95, 150) fall between boundary states: the held
+  // outer forces and the outer cycle come back from the checkpoint.
+  std::string text = stagedScene(91, 110);
+  text.replace(text.find("time_step_fraction = 0.7\n"), 25, "time_step_fraction = 0.7\nouter_step_ratio = 2\n");
+  std::ofstream(scenePath_) << text;
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.outerStepRatio, 2);
+  expectStagedResumesMatch(reference, {35L, 95L, 150L});
+}
+
+// duration_ns instead of steps: a stage runs the fewest steps whose time reaches its duration,
+// at the stage's own time step (a whole number of steps within rounding is that number), and a
+// run given by durations is the run given by those steps, also when it is killed and resumed.
+TEST_F(Restart, StagesGivenAsDurationsRunTheStepsOfTheirTimeAndResumeBitForBit) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  const RunSummary bySteps = run("steps");
+  ASSERT_EQ(bySteps.stages.size(), 2u);
+  ASSERT_EQ(bySteps.stages[1].steps, 110);  // not ended by final_strain
+  const double relaxStep = bySteps.timeStep, pullTime = bySteps.stages[1].time;
+  std::string text = stagedScene(90, 110);
+  text.replace(text.find("steps = 90\n"), 11, fmt::format("duration_ns = {:.17g}\n", 89.6 * relaxStep));
+  text.replace(text.find("steps = 110\n"), 12, fmt::format("duration_ns = {:.17g}\n", pullTime));
+  std::ofstream(scenePath_) << text;
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  EXPECT_EQ(reference.stages[0].steps, 90);
+  EXPECT_EQ(reference.stages[1].steps, 110);
+  EXPECT_EQ(reference.stages[0].time, bySteps.stages[0].time);
+  EXPECT_GE(reference.stages[0].time, 89.6 * relaxStep);
+  EXPECT_EQ(reference.finalEnergies.total(), bySteps.finalEnergies.total());
+  for (const char* f : {"relax-energies.csv", "pull-energies.csv", "pull-tensile.csv", "trajectory.xyz"})
+    EXPECT_EQ(slurp(dir_ / "steps" / f), slurp(dir_ / "reference" / f)) << f;
+  expectStagedResumesMatch(reference, {35L, 95L});
+}
+
+TEST_F(Restart, StageErrorsNameTheKey) {
+  const auto expectError = [this](const std::string& text, const char* key) { expectSceneError(text, key); };
+  const std::string good = stagedScene(10, 10);
+  // The good scene with `from` (which it holds) replaced by `to`.
+  const auto edited = [&good](const std::string& from, const std::string& to) {
+    std::string t = good;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expectError(edited("kind = \"tensile\"", "kind = \"squeeze\""), "stages[1].kind");
+  // A tensile table in a compression stage.
+  expectError(edited("kind = \"tensile\"", "kind = \"compression\""), "stages[1].tensile");
+  expectError(edited("name = \"pull\"", "name = \"relax\""), "stages[1].name");
+  expectError(edited("[stages.tensile]", "[unused]"), "stages");
+  expectError(good + "[tensile]\ngrip_width_nm = 3.0\nstrain_rate_per_ns = 0.5\n", "tensile");
+  expectError(edited("add_effects = [\"local_damping\"]", "add_effects = [\"local_damping\", \"vdw_contact\"]"),
+              "stages[0].add_effects");
+  expectError(edited("time_step_fraction = 0.7\n", "time_step_fraction = 0.7\nsteps = 5\n"), "run.steps");
+  expectError(edited("steps = 10\n", "steps = 10\nduration_ns = 0.01\n"), "stages[0].duration_ns");  // both
+  expectError(edited("steps = 10\n", ""), "stages[0].steps");  // neither
+  expectError(edited("steps = 10\n", "duration_ns = -1.0\n"), "stages[0].duration_ns");
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// dem --profile: every effect of the run has its phases, and the timed phases add up to no more
+// than the run's wall time.
+TEST_F(Restart, ProfileNamesEveryEffectsPhases) {
+  RunOptions o;
+  o.profile = true;
+  const RunSummary r = run("profiled", o);
+  double sum = 0.0;
+  std::string phases;
+  for (const auto& [phase, seconds] : r.profile.seconds) {
+    EXPECT_GE(seconds, 0.0) << phase;
+    sum += seconds;
+    phases += phase + "; ";
+  }
+  for (const char* e : {"bonds", "vdw_contact", "contact_damping", "local_damping"})
+    EXPECT_NE(phases.find(std::string("gather ") + e), std::string::npos) << phases;
+  EXPECT_NE(phases.find("items vdw_contact"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("prepare vdw_contact"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("outputs"), std::string::npos) << phases;
+  EXPECT_GT(r.wallSeconds, 0.0);
+  EXPECT_LE(sum, 1.01 * r.wallSeconds) << phases;
+  // Without --profile nothing is timed.
+  EXPECT_TRUE(run("plain").profile.seconds.empty());
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
+
+namespace mesochain::mdem {
+namespace {
+
+// Relax, then two fast compress-recover cycles (plates, compression.hpp) in one scene.
+std::string compressionScene() {
+  std::string text = stagedScene(60, 0);
+  text = text.substr(0, text.find("[[stages]]\nname = \"pull\""));
+  text += R"([[stages]]
+name = "squeeze"
+kind = "compression"
+steps = 400
+energies_every = 10
+[stages.compression]
+cycles = 2
+max_strain = 0.5
+strain_rate_per_ns = 400.0
+hold_ns = 0.0002
+plot_png = "squeeze.png"
+)";
+  return text;
+}
+
+TEST_F(Restart, CompressionResumesBitForBitMidCycle) {
+  std::ofstream(scenePath_) << compressionScene();
+  std::vector<std::string> status;  // the progress note (StatusLinesTellTheTimeStrainAndStress)
+  RunOptions withStatus;
+  withStatus.status = [&](const std::string& line) { status.push_back(line); };
+  const RunSummary reference = runScene(loadScene(scenePath_), (dir_ / "reference").string(), [](double) {}, withStatus);
+  ASSERT_FALSE(status.empty());
+  EXPECT_EQ(status.back().rfind("squeeze: t = ", 0), 0u) << status.back();
+  EXPECT_NE(status.back().find(", cycle 2 of 2, strain "), std::string::npos) << status.back();
+  ASSERT_EQ(reference.stages.size(), 2u);
+  const StageSummary& squeeze = reference.stages[1];
+  EXPECT_TRUE(squeeze.compression);
+  EXPECT_TRUE(squeeze.cyclesDone);
+  ASSERT_EQ(squeeze.cycles.size(), 2u);
+  EXPECT_LT(squeeze.steps, 400);  // ended by the protocol, not by the step count
+  EXPECT_GT(squeeze.peakPressure, 0.0);
+  // The plates reach 50 % and squeeze the film: at the sample of the largest strain its thickness
+  // (centre span + 2R) is well below the initial one (the plates are fast here, 400/ns, so the
+  // film does not follow them closely; a slow compression is in docs/scene-file.md).
+  {
+    std::ifstream csv(dir_ / "reference" / "squeeze-compression.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line.rfind("time_ns,cycle,phase,strain,plate_gap_nm,film_thickness_nm,", 0), 0u) << line;
+    double largestStrain = 0.0, thicknessThen = 0.0, initial = 0.0;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+      std::vector<double> f;
+      for (std::size_t a = 0, b; a <= line.size(); a = b + 1) {
+        b = line.find(',', a);
+        if (b == std::string::npos) b = line.size();
+        const std::string field = line.substr(a, b - a);
+        f.push_back(f.size() == 2 ? 0.0 : std::stod(field));  // (the phase)
+      }
+      ASSERT_GE(f.size(), 6u);
+      if (rows++ == 0) initial = f[5];
+      if (f[3] > largestStrain) largestStrain = f[3], thicknessThen = f[5];
+    }
+    EXPECT_GT(rows, 10);
+    EXPECT_GT(largestStrain, 0.4);
+    EXPECT_LT(thicknessThen, 0.75 * initial);
+  }
+  // Interrupted in the first cycle's closing, its opening and the second cycle (the relax and
+  // the stage boundary: StagesResumeBitForBitAcrossTheStageBoundary).
+  expectStagedResumesMatch(reference, {75L, 130L, 175L},
+                           {"relax-energies.csv", "squeeze-energies.csv", "squeeze-compression.csv",
+                            "squeeze-cycles.csv", "trajectory.xyz"},
+                           [&](const RunSummary& r, long at) {
+                             ASSERT_EQ(r.stages.back().cycles.size(), 2u) << at;
+                             EXPECT_EQ(r.stages.back().cycles[1].density, squeeze.cycles[1].density) << at;
+                           });
+}
+
+TEST_F(Restart, CompressionErrorsNameTheKey) {
+  const auto expectError = [this](const std::string& text, const char* key) { expectSceneError(text, key); };
+  const std::string good = compressionScene();
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expectError(with("max_strain = 0.5", "max_strain = 1.2"), "stages[1].compression.max_strain");
+  expectError(with("strain_rate_per_ns = 400.0", "strain_rate_per_ns = 400.0\nplate_speed_nm_per_ns = 3.0"),
+              "stages[1].compression.strain_rate_per_ns");
+  expectError(with("strain_rate_per_ns = 400.0", ""), "stages[1].compression.strain_rate_per_ns");
+  expectError(with("cycles = 2", "cycles = 0"), "stages[1].compression.cycles");
+  expectError(with("cycles = 2", "cycles = 2\nspeed = 1"), "speed");
+  expectError(with("[stages.compression]", "[stages.tensile]"), "stages[1]");
+  // A compression stage's table on a relax stage.
+  expectError(with("kind = \"compression\"", "kind = \"relax\""), "stages[1].compression");
+}
+
+}  // namespace
+}  // namespace mesochain::mdem
