@@ -18,6 +18,7 @@
 
 #include "benchmarks/bench_network_coarsen.hpp"
 #include "benchmarks/bench_network_inertia.hpp"
+#include "benchmarks/bench_network_kernel.hpp"
 #include "benchmarks/bench_network_mts.hpp"
 #include "app/cli/command.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
@@ -58,6 +59,7 @@ struct NetworkBenchOptions {
   std::string coarsenTo;             // with --scene: a scene whose element type is twice as long (bench_network_coarsen.hpp)
   bool coarsenRelaxed = false;       // coarsen after --relax-ns (the relaxed film), not before
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
+  int quadraturePoints = 0;          // > 0: [vdw_contact] quadrature_points after the relaxation (--relax-ns)
   bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
   std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
   std::vector<double> massScales;    // non-empty: the same for mass (density) scaling
@@ -183,96 +185,6 @@ void printEffectsCost(const NetworkBenchOptions& o) {
   }
 }
 
-// The anisotropic kernel over the contact pairs of a network: each list pair as the contact
-// effect orders it (quadrature along the element of the lower filament).
-using SegmentPair = std::pair<mdem::Segment, mdem::Segment>;
-std::vector<SegmentPair> networkPairs(const mdem::Scene& s) {
-  const mdem::ContactNeighbourhood nb(s, mdem::VdwContactEffect::interactionRange(s));
-  const mdem::FilamentTopology& topo = nb.topology();
-  std::vector<SegmentPair> out;
-  for (const auto& [i, j] : nb.list().pairs()) {
-    const bool iOuter = topo.filament[i] != topo.filament[j] ? topo.filament[i] < topo.filament[j] : i < j;
-    const int o = iOuter ? i : j, in = iOuter ? j : i;
-    const mdem::Segment so = nb.segment(s.bodies, o);
-    out.emplace_back(so, nb.imageNear(s.bodies, in, so.centre));
-  }
-  return out;
-}
-
-// All pairs, `repeat` times (the function callgrind is told to collect: --toggle-collect=*evaluatePairs*).
-template <class Kernel>
-__attribute__((noinline)) double evaluatePairs(const Kernel& kernel, const std::vector<SegmentPair>& pairs, int repeat,
-                                               std::vector<mdem::ContactPairResult>* out) {
-  double sum = 0.0;
-  out->resize(pairs.size());
-  for (int r = 0; r < repeat; ++r)
-    for (std::size_t k = 0; k < pairs.size(); ++k) sum += ((*out)[k] = kernel(pairs[k].first, pairs[k].second)).energy;
-  return sum;
-}
-
-struct KernelError {
-  double energyMax = 0.0, energySum = 0.0, forceMax = 0.0, nsPerPair = 0.0;
-};
-
-// Errors against the 64-point rule: largest |dE| in units of the contact energy scale |Phi_eq| 2 la,
-// sum |dE| over sum |E|, largest |dF| (force and torque on both elements) over the largest |F|.
-template <class Kernel>
-KernelError kernelError(const Kernel& kernel, const std::vector<SegmentPair>& pairs,
-                        const std::vector<mdem::ContactPairResult>& ref, double scale, double seconds) {
-  std::vector<mdem::ContactPairResult> out;
-  evaluatePairs(kernel, pairs, 1, &out);
-  KernelError e;
-  double refSum = 0.0, fRef = 0.0;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const mdem::ContactPairResult &a = out[k], &b = ref[k];
-    e.energyMax = std::max(e.energyMax, std::abs(a.energy - b.energy) / scale);
-    e.energySum += std::abs(a.energy - b.energy), refSum += std::abs(b.energy);
-    fRef = std::max({fRef, b.forceA.norm(), b.torqueA.norm(), b.torqueB.norm()});
-    e.forceMax = std::max({e.forceMax, (a.forceA - b.forceA).norm(), (a.torqueA - b.torqueA).norm(),
-                           (a.torqueB - b.torqueB).norm()});
-  }
-  e.energySum /= refSum, e.forceMax /= fRef;
-  // Wall time per pair: best of a few rounds of `seconds` / 5 each (noisy machine: use callgrind).
-  double best = 1e300;
-  for (int round = 0; round < 5; ++round) {
-    const auto t0 = std::chrono::steady_clock::now();
-    long evaluated = 0;
-    double elapsed = 0.0;
-    while (elapsed < seconds / 5) {
-      evaluatePairs(kernel, pairs, 1, &out);
-      evaluated += static_cast<long>(pairs.size());
-      elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
-    best = std::min(best, 1e9 * elapsed / evaluated);
-  }
-  e.nsPerPair = best;
-  return e;
-}
-
-// The aligned path (vdw_contact.hpp, enableAlignedPath) against its window, 8 Gauss points: the
-// errors, the cost and where the interacting pairs fall (weight 1: tables only; ramp: both; rule).
-void printAlignedWindowRows(const mdem::TubePairPotential& potential, const std::vector<SegmentPair>& pairs,
-                            const std::vector<mdem::ContactPairResult>& ref, double scale, double la, double lb,
-                            double seconds) {
-  std::cout << "aligned window (degrees; 8 points): errors as above; interacting pairs on the tables alone / in "
-               "the blend ramps / on the rule\n";
-  for (double window : {0.0, 0.25, 0.5, 0.75, 1.0, 1.15}) {
-    mdem::AnisotropicVdwKernel k(potential, lb, 8);
-    k.enableAlignedPath(la, window);
-    const KernelError e = kernelError([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
-                                      pairs, ref, scale, seconds);
-    long tables = 0, ramp = 0, rule = 0;
-    for (std::size_t p = 0; p < pairs.size(); ++p) {
-      if (ref[p].energy == 0.0) continue;
-      const double w = k.aligned ? mdem::alignedWeight(k, pairs[p].first, pairs[p].second) : 0.0;
-      (w == 1.0 ? tables : w > 0.0 ? ramp : rule) += 1;
-    }
-    std::cout << fmt::format("aligned {:4.1f}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}   {} / {} / {}\n", window, e.energyMax,
-                             e.energySum, e.forceMax, e.nsPerPair, tables, ramp, rule)
-              << std::flush;
-  }
-}
-
 // --scene, coarsened to --coarsen-to's elements when given.
 // With --state-from-run, the elements start where that run's checkpoint has them.
 mdem::Scene sceneFile(const NetworkBenchOptions& o) {
@@ -294,82 +206,6 @@ mdem::Scene curveScene(const NetworkBenchOptions& o) {
   return o.relaxNs > 0.0 ? relaxedScene(std::move(s), o.relaxNs, o.relaxedState) : s;
 }
 
-int printKernelCurve(const NetworkBenchOptions& o) {
-  const mdem::Scene s = curveScene(o);
-  const std::vector<SegmentPair> pairs = networkPairs(s);
-  mdem::TubePairSpec ps;
-  ps.lj = s.contacts.vdw.lj, ps.radiusA = ps.radiusB = s.elementTypes[0].radius;
-  ps.switchGap = s.contacts.vdw.switchGap, ps.cutoffGap = s.contacts.vdw.cutoffGap;
-  const mdem::TubePairPotential potential(ps);
-  const double la = 0.5 * s.elementTypes[0].length, lb = la;
-  const auto line = [&](const mdem::QuadratureRule& rule) {
-    return [&potential, rule](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(potential, rule, a, b); };
-  };
-  if (o.kernelPoints > 0) {  // one variant only, for callgrind
-    std::vector<mdem::ContactPairResult> out;
-    double sum = 0.0;
-    if (o.kernelPath == "line") {
-      sum = evaluatePairs(line(mdem::gaussLegendre(o.kernelPoints)), pairs, o.kernelRepeat, &out);
-    } else {
-      mdem::AnisotropicVdwKernel k(potential, lb, o.kernelPoints);
-      if (o.alignedWindow > 0.0) k.enableAlignedPath(la, o.alignedWindow);
-      sum = evaluatePairs([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
-                          pairs, o.kernelRepeat, &out);
-    }
-    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points, aligned window {} degrees: energy sum "
-                             "{:.10g} zJ\n",
-                             pairs.size(), o.kernelRepeat, o.kernelPath, o.kernelPoints, std::max(0.0, o.alignedWindow),
-                             sum / o.kernelRepeat);
-    return 0;
-  }
-  const double scale = std::abs(potential.wellDepthPerLength()) * 2.0 * la;
-  std::vector<mdem::ContactPairResult> ref;
-  const mdem::AnisotropicVdwKernel reference(potential, lb, 64);
-  auto tableKernel = [](const mdem::AnisotropicVdwKernel& k) {
-    return [&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); };
-  };
-  evaluatePairs(tableKernel(reference), pairs, 1, &ref);
-  long interacting = 0, farPairs = 0;
-  for (const auto& r : ref) interacting += r.energy != 0.0;
-  const double farCut = potential.cutoffDistance() + 3.0 * potential.gridStep();  // the kernel's early out
-  for (const auto& [a, b] : pairs) {
-    double sa, sb;
-    mdem::closestPoints(a, b, &sa, &sb);
-    farPairs += (a.centre + sa * a.axis - b.centre - sb * b.axis).norm() >= farCut;
-  }
-  std::cout << fmt::format(
-      "Anisotropic contact kernel over the {} list pairs of the {}-element network ({} with nonzero energy, {} "
-      "skipped by the far-pair early out);\n"
-      "errors against the 64-point rule: energy max in units of |Phi_eq| 2 la = {:.4g} zJ, energy sum |dE|/sum |E|,\n"
-      "force/torque max |dF| over max |F|; ns per pair: best of 5 (wall time, noisy: callgrind figures in "
-      "docs/benchmarks.md)\n",
-      pairs.size(), s.bodies.size(), interacting, farPairs, scale);
-  std::cout << "path   points  tolerance  sample_worst  energy_max   energy_sum   force_max    ns/pair\n";
-  const double per = std::max(0.2, o.seconds / 10);
-  for (int n : {2, 3, 4, 5, 6, 8, 10, 12, 16}) {
-    const mdem::AnisotropicVdwKernel k(potential, lb, n);
-    const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
-    std::cout << fmt::format("table  {:6d}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", n, "-", "-",
-                             e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
-              << std::flush;
-  }
-  for (int n : {8}) {
-    const KernelError e = kernelError(line(mdem::gaussLegendre(n)), pairs, ref, scale, per);
-    std::cout << fmt::format("line   {:6d}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", n, "-", "-",
-                             e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
-              << std::flush;
-  }
-  printAlignedWindowRows(potential, pairs, ref, scale, la, lb, per);
-  for (double tol : {3e-2, 1e-2, 3e-3, 1e-3, 1e-4}) {
-    const mdem::QuadratureChoice c = mdem::quadraturePointsForTolerance(potential, la, lb, tol);
-    const mdem::AnisotropicVdwKernel k(potential, lb, c.points);
-    const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
-    std::cout << fmt::format("table  {:6d}  {:9.0e}  {:12.3g}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", c.points,
-                             tol, c.worstError, e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
-              << std::flush;
-  }
-  return 0;
-}
 }  // namespace
 
 Command makeBenchNetworkCommand() {
@@ -432,6 +268,10 @@ Command makeBenchNetworkCommand() {
         ->check(CLI::PositiveNumber);
     (*sub)->add_option("--pull-ramp-ns", opt->pull.ramp, "with --pull: the grips' velocity ramp (default 0.02 ns)")
         ->check(CLI::PositiveNumber);
+    (*sub)->add_option("--quadrature-points", opt->quadraturePoints,
+                       "with --inertia-scales, --mass-scales or --step-fractions: the vdW kernel's Gauss points from "
+                       "the relaxed state on (the relaxation keeps the scene's)")
+        ->check(CLI::Range(2, 64));
     (*sub)->add_flag("--pull-knobs-only", opt->pull.knobsOnly,
                      "with --pull: only the scaled runs, without the reference and its repeat (another process)");
     (*sub)->add_flag("--pull-repeat-only", opt->pull.repeatOnly, "with --pull: only the perturbed repeat of the scene");
@@ -476,12 +316,18 @@ Command makeBenchNetworkCommand() {
     mdem::forceBaselineVdwKernel(opt->kernelIsa == "baseline");
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
-    if (opt->kernelCurve) return printKernelCurve(*opt);
+    if (opt->kernelCurve) {
+      KernelCurveOptions k;
+      k.points = opt->kernelPoints, k.repeat = opt->kernelRepeat, k.path = opt->kernelPath;
+      k.alignedWindow = opt->alignedWindow, k.seconds = opt->seconds;
+      return printKernelCurve(curveScene(*opt), k);
+    }
     if (opt->bondSpectrum || !opt->inertiaScales.empty() || !opt->massScales.empty() || !opt->stepFractions.empty()) {
       mdem::Scene s =
           opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       if (opt->coarsenRelaxed && !opt->coarsenTo.empty()) s = coarsenedFilm(s, opt->coarsenTo);
+      if (opt->quadraturePoints > 0) s.contacts.vdw.quadraturePoints = opt->quadraturePoints;
       const bool mass = !opt->massScales.empty(), fraction = !opt->stepFractions.empty();
       const std::vector<double> given = mass ? opt->massScales : fraction ? opt->stepFractions : opt->inertiaScales;
       const std::vector<double> scales = given.empty() ? std::vector<double>{1.0} : given;

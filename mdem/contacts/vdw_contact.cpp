@@ -62,6 +62,11 @@ template <class Density>
     const double u0 = f + s * c;
     const double h2 = hA + s * (hB + s * hC);
     if (h2 >= hCut2 || std::abs(u0) >= uCut) continue;
+    // Beyond b's end: the point's distance from the segment is that from the end. At or beyond
+    // the early-out distance every table cell its lookup touches has zero node data (as for the
+    // whole pair above), so skipping it changes no bit of the sums.
+    const double beyondEnd = std::abs(u0) - lb;
+    if (beyondEnd > 0.0 && h2 + beyondEnd * beyondEnd >= cut2) continue;
     const double h = std::sqrt(std::max(h2, 0.0));
     double dh, du;
     const double d = density(h, u0, &dh, &du);

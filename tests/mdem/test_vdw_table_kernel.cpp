@@ -135,6 +135,35 @@ TEST(MdemVdwTableKernel, FarPairEarlyOutSkipsOnlyExactZeros) {
   EXPECT_GT(nonzeroInside, 10);  // and the sweep starts where the contact is felt
 }
 
+// The quadrature skips single points beyond b's end whose distance from the segment (from its end)
+// is at least the early-out distance: there the table's value and both slopes are exactly zero,
+// so a pair's sums are those of the full rule bit for bit. Swept over the corner region up to the
+// table's cuts, including the band just outside the early-out distance.
+TEST(MdemVdwTableKernel, PointsBeyondTheEarlyOutDistanceFromAnEndAreExactZeros) {
+  const TubePairPotential& p = tubePotential();
+  const double farCut = p.cutoffDistance() + 3.0 * p.gridStep();
+  const SegmentLineTable& table = tableKernel(8).table;
+  const double lb = table.halfLength();
+  int checked = 0, band = 0, nonzeroJustInside = 0;
+  for (double h = 0.0; h < table.hCut(); h += 0.0037)
+    for (double u = lb; u < table.uCut(); u += 0.0041) {
+      const double r = std::hypot(h, u - lb);
+      double dh, du;
+      const double d = table.eval(h, u, &dh, &du);
+      if (r >= farCut) {
+        ++checked, band += r < farCut + 0.02;
+        ASSERT_EQ(d, 0.0) << h << " " << u;
+        ASSERT_EQ(dh, 0.0) << h << " " << u;
+        ASSERT_EQ(du, 0.0) << h << " " << u;
+      } else if (r < p.cutoffDistance() - 0.05) {
+        nonzeroJustInside += d != 0.0;
+      }
+    }
+  EXPECT_GT(band, 100);  // the band next to the early-out distance was sampled
+  EXPECT_GT(checked, 10000);
+  EXPECT_GT(nonzeroJustInside, 1000);  // inside, the table is not zero: the test sees the edge
+}
+
 TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
   const TubePairPotential& p = tubePotential();
   const double scale = std::abs(p.wellDepthPerLength()) * kSegmentLength;
