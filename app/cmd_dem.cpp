@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <omp.h>
 
 #include "app/cli_checks.hpp"
 #include "app/commands.hpp"
@@ -51,6 +52,16 @@ void printProfile(const mdem::RunSummary& r, std::size_t elements) {
     std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", phase, sec, share(sec));
   std::cout << fmt::format("  {:<52s} {:9.4g} s  {:5.1f} %\n", "other (serial loop, progress)", r.wallSeconds - timed,
                            share(r.wallSeconds - timed));
+}
+
+// LAMMPS's "Performance" line, per stage this invocation advanced (a resumed run reports the
+// steps since its resume).
+void printPerformance(const mdem::RunSummary& r) {
+  for (const mdem::StagePerformance& p : r.performance)
+    std::cout << fmt::format("performance{}: {} steps in {:.4g} s of wall time, {:.4g} element-steps/s, {:.4g} ns/day "
+                             "({} elements, step {:.4g} ns, OpenMP threads {})\n",
+                             p.name.empty() ? "" : " of stage " + p.name, p.steps, p.wallSeconds, p.elementStepsPerSecond(),
+                             p.nsPerDay(), p.elements, p.timeStep, omp_get_max_threads());
 }
 
 struct DemOptions {
@@ -123,6 +134,7 @@ Command makeDemCommand() {
                                "given) continues it bit for bit\n",
                                r.steps, r.time, (std::filesystem::path(dir) / scene.output.checkpoint).string(),
                                opt->scene, dir);
+      printPerformance(r);
       if (opt->profile) printProfile(r, scene.bodies.size());
       return kStoppedAsAsked;
     }
@@ -193,6 +205,7 @@ Command makeDemCommand() {
                                  st.tensileJson);
       }
     }
+    printPerformance(r);
     if (opt->profile) printProfile(r, scene.bodies.size());
     if (!scene.output.plotPng.empty())
       std::cout << "plot: " << (std::filesystem::path(dir) / scene.output.plotPng).string() << "\n";

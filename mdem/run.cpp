@@ -422,6 +422,8 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     };
     StageSummary summary;
     summary.name = spec.name;
+    StagePerformance performance{spec.name, 0, 0.0, sim.timeStep(), static_cast<long>(sim.bodies().size())};
+    const long firstStepHere = sim.stepCount();
     const long end = stageStep + spec.steps;
     const bool stopCheck = spec.stopKineticEnergy > 0.0;
     while (sim.stepCount() < end) {
@@ -440,8 +442,10 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       const auto stepping = Clock::now();
       sim.run(next - k0);
       const auto outputs = Clock::now();
-      r.wallSeconds += std::chrono::duration<double>(outputs - stepping).count();
+      const double steppingSeconds = std::chrono::duration<double>(outputs - stepping).count();
+      r.wallSeconds += steppingSeconds, performance.wallSeconds += steppingSeconds;
       const long k = sim.stepCount();
+      performance.steps = k - firstStepHere;
       if (options.interruptAfter >= 0 && k >= options.interruptAfter) {
         r.interrupted = true;
         break;
@@ -471,13 +475,14 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
         progress(std::min(1.0, static_cast<double>(k) / totalSteps));
       }
       const double outputSeconds = std::chrono::duration<double>(Clock::now() - outputs).count();
-      r.wallSeconds += outputSeconds;
+      r.wallSeconds += outputSeconds, performance.wallSeconds += outputSeconds;
       if (options.profile) r.profile["outputs (energies, samples, frames, checkpoints)"] += outputSeconds;
       if (stop) break;
     }
     summary.steps = sim.stepCount() - stageStep;
     summary.time = sim.time() - stageTime;
     summary.finalEnergies = sim.energies();
+    if (performance.steps > 0) r.performance.push_back(performance);
     if (r.interrupted) {
       r.steps = sim.stepCount(), r.time = sim.time(), r.finalEnergies = summary.finalEnergies;
       return r;

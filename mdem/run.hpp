@@ -66,6 +66,18 @@ struct StageSummary {
   std::string filmJson;
 };
 
+// What one invocation spent on one stage (LAMMPS's "Performance" line): the steps it advanced,
+// the wall time of their stepping and outputs, the stage's time step and element count.
+struct StagePerformance {
+  std::string name;  // "" for a scene without [[stages]]
+  long steps = 0;
+  double wallSeconds = 0.0;
+  double timeStep = 0.0;  // ns
+  long elements = 0;
+  double elementStepsPerSecond() const { return wallSeconds > 0.0 ? static_cast<double>(elements) * steps / wallSeconds : 0.0; }
+  double nsPerDay() const { return wallSeconds > 0.0 ? 86400.0 * steps * timeStep / wallSeconds : 0.0; }
+};
+
 struct RunSummary {
   long steps = 0;
   double time = 0.0;             // ns
@@ -77,6 +89,7 @@ struct RunSummary {
   std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting
   EnergyLedger finalEnergies;
   std::vector<StageSummary> stages;  // those completed by this invocation
+  std::vector<StagePerformance> performance;  // every stage this invocation advanced, the last one also when interrupted
   PhaseTimes profile;                // with RunOptions::profile: seconds per phase, "outputs" included
   double wallSeconds = 0.0;          // of the stepping and outputs
   double timeStep = 0.0;

@@ -77,6 +77,38 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
 }
 
+// The performance record (RunSummary::performance, `mesochain dem`'s "performance" lines): one
+// entry per stage an invocation advanced, with the steps it advanced there, so that a resumed run
+// reports the steps since its resume and a killed one the stage it was in.
+TEST_F(Restart, PerformanceCountsTheStepsEachInvocationAdvancedPerStage) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.performance.size(), 2u);
+  EXPECT_EQ(reference.performance[0].name, "relax");
+  EXPECT_EQ(reference.performance[0].steps, 90);
+  EXPECT_EQ(reference.performance[1].name, "pull");
+  EXPECT_EQ(reference.performance[1].steps, reference.stages[1].steps);
+  for (const StagePerformance& p : reference.performance) {
+    EXPECT_GT(p.wallSeconds, 0.0);
+    EXPECT_GT(p.timeStep, 0.0);
+    EXPECT_GT(p.elementStepsPerSecond(), 0.0);
+    EXPECT_NEAR(p.nsPerDay(), 86400.0 * p.steps * p.timeStep / p.wallSeconds, 1e-9 * p.nsPerDay());
+  }
+  RunOptions kill;
+  kill.interruptAfter = 150;  // inside the pull
+  const RunSummary killed = run("out", kill);
+  ASSERT_TRUE(killed.interrupted);
+  ASSERT_EQ(killed.performance.size(), 2u);
+  EXPECT_EQ(killed.performance[1].steps, 150 - 90);
+  RunOptions resume;
+  resume.resume = true;
+  const RunSummary resumed = run("out", resume);
+  ASSERT_EQ(resumed.performance.size(), 1u);
+  EXPECT_EQ(resumed.performance[0].name, "pull");
+  EXPECT_EQ(resumed.performance[0].steps, resumed.steps - resumed.resumedFromStep);
+  EXPECT_EQ(resumed.performance[0].elements, reference.performance[1].elements);
+}
+
 TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
   // vdW contacts every 2 steps; the pull stage starts its outer cycle at step 91, so its
   // checkpoints (100, 140) and the kills (35, 95, 150) fall between boundary states: the held
