@@ -21,6 +21,7 @@
 #include "benchmarks/bench_network_kernel.hpp"
 #include "benchmarks/bench_network_mts.hpp"
 #include "app/cli/command.hpp"
+#include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/network_generator.hpp"
@@ -313,6 +314,9 @@ Command makeBenchNetworkCommand() {
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
+    if (opt->quadraturePoints > 0 && opt->inertiaScales.empty() && opt->massScales.empty() && opt->stepFractions.empty())
+      throw InputError("<command line>", "option --quadrature-points", "without a step knob",
+                       "--inertia-scales, --mass-scales or --step-fractions as well (it applies to their runs)");
     mdem::forceBaselineVdwKernel(opt->kernelIsa == "baseline");
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
