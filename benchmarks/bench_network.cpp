@@ -61,6 +61,7 @@ struct NetworkBenchOptions {
   bool coarsenRelaxed = false;       // coarsen after --relax-ns (the relaxed film), not before
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
   int quadraturePoints = 0;          // > 0: [vdw_contact] quadrature_points after the relaxation (--relax-ns)
+  int crossingPoints = 0;            // > 0: [vdw_contact] crossing_quadrature_points (as --quadrature-points; and --kernel-points)
   bool bondSpectrum = false;         // what sets the time step (bench_network_inertia.hpp) and exit
   std::vector<double> inertiaScales; // non-empty: the rotational-inertia-scaling table and exit
   std::vector<double> massScales;    // non-empty: the same for mass (density) scaling
@@ -230,6 +231,10 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--kernel-points", opt->kernelPoints,
                        "with --kernel-curve: only this many Gauss points, --kernel-repeat times (for callgrind)");
     (*sub)->add_option("--kernel-repeat", opt->kernelRepeat, "with --kernel-points: evaluations of every pair");
+    (*sub)->add_option("--crossing-quadrature-points", opt->crossingPoints,
+                       "[vdw_contact] crossing_quadrature_points: with --kernel-points, and for the runs of "
+                       "--inertia-scales, --mass-scales or --step-fractions as --quadrature-points")
+        ->check(CLI::Range(2, 64));
     (*sub)->add_option("--outer-ratios", opt->outerRatios,
                        "multiple time stepping: throughput and accuracy at these outer/inner step ratios, and exit")
         ->delimiter(',')
@@ -314,16 +319,20 @@ Command makeBenchNetworkCommand() {
   };
   c.selected = [sub] { return *sub && (*sub)->parsed(); };
   c.run = [opt] {
-    if (opt->quadraturePoints > 0 && opt->inertiaScales.empty() && opt->massScales.empty() && opt->stepFractions.empty())
+    const bool knob = !opt->inertiaScales.empty() || !opt->massScales.empty() || !opt->stepFractions.empty();
+    if (opt->quadraturePoints > 0 && !knob)
       throw InputError("<command line>", "option --quadrature-points", "without a step knob",
                        "--inertia-scales, --mass-scales or --step-fractions as well (it applies to their runs)");
+    if (opt->crossingPoints > 0 && !knob && !(opt->kernelCurve && opt->kernelPoints > 0))
+      throw InputError("<command line>", "option --crossing-quadrature-points", "without a step knob or --kernel-points",
+                       "--inertia-scales, --mass-scales or --step-fractions, or --kernel-curve --kernel-points, as well");
     mdem::forceBaselineVdwKernel(opt->kernelIsa == "baseline");
     std::cout << "vdW table kernel: "
               << (mdem::vdwKernelIsa() == mdem::VdwKernelIsa::Avx2 ? "AVX2" : "baseline (SSE2)") << "\n";
     if (opt->kernelCurve) {
       KernelCurveOptions k;
       k.points = opt->kernelPoints, k.repeat = opt->kernelRepeat, k.path = opt->kernelPath;
-      k.alignedWindow = opt->alignedWindow, k.seconds = opt->seconds;
+      k.alignedWindow = opt->alignedWindow, k.seconds = opt->seconds, k.crossingPoints = opt->crossingPoints;
       return printKernelCurve(curveScene(*opt), k);
     }
     if (opt->bondSpectrum || !opt->inertiaScales.empty() || !opt->massScales.empty() || !opt->stepFractions.empty()) {
@@ -332,6 +341,7 @@ Command makeBenchNetworkCommand() {
       if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
       if (opt->coarsenRelaxed && !opt->coarsenTo.empty()) s = coarsenedFilm(s, opt->coarsenTo);
       if (opt->quadraturePoints > 0) s.contacts.vdw.quadraturePoints = opt->quadraturePoints;
+      if (opt->crossingPoints > 0) s.contacts.vdw.crossingQuadraturePoints = opt->crossingPoints;
       const bool mass = !opt->massScales.empty(), fraction = !opt->stepFractions.empty();
       const std::vector<double> given = mass ? opt->massScales : fraction ? opt->stepFractions : opt->inertiaScales;
       const std::vector<double> scales = given.empty() ? std::vector<double>{1.0} : given;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -144,8 +145,7 @@ void printAngleClassRows(const mdem::TubePairPotential& potential, const std::ve
   for (int k = 0; k < endOn; ++k)
     std::cout << fmt::format("  {:>5.0f}-{:<2.0f} ({:6d})", edges[k], std::min(90.0, edges[k + 1]), count[k]);
   std::cout << fmt::format("  end-on   ({:6d})\n", count[endOn]);
-  for (int n : {3, 4, 5, 6, 7, 8, 10, 12}) {
-    const mdem::AnisotropicVdwKernel k(potential, lb, n);
+  const auto row = [&](const mdem::AnisotropicVdwKernel& k, const std::string& label) {
     std::vector<double> eMax(count.size(), 0.0), fMax(count.size(), 0.0);
     for (std::size_t p = 0; p < pairs.size(); ++p) {
       if (cls[p] < 0) continue;
@@ -155,9 +155,16 @@ void printAngleClassRows(const mdem::TubePairPotential& potential, const std::ve
       fMax[cls[p]] = std::max({fMax[cls[p]], (a.forceA - b.forceA).norm() / fRef, (a.torqueA - b.torqueA).norm() / fRef,
                                (a.torqueB - b.torqueB).norm() / fRef});
     }
-    std::cout << fmt::format("  {:6d}", n);
+    std::cout << fmt::format("  {:>6}", label);
     for (std::size_t c = 0; c < count.size(); ++c) std::cout << fmt::format("  {:8.2g}/{:<8.2g}", eMax[c], fMax[c]);
     std::cout << "\n" << std::flush;
+  };
+  for (int n : {3, 4, 5, 6, 7, 8, 10, 12}) row(mdem::AnisotropicVdwKernel(potential, lb, n), std::to_string(n));
+  // The crossing rule (vdw_contact.hpp, enableCrossingRule): 8 points, and more beyond the ramp.
+  for (int n : {10, 12, 16}) {
+    mdem::AnisotropicVdwKernel k(potential, lb, 8);
+    k.enableCrossingRule(n);
+    row(k, fmt::format("8+{}", n));
   }
 }
 
@@ -173,9 +180,10 @@ void printCrossingCorrugation(const mdem::TubePairPotential& potential, double l
   for (double deg : angles) std::cout << fmt::format("  {:>16}", fmt::format("{:.0f} degrees", deg));
   std::cout << "\n";
   const double d = potential.equilibriumDistance();
-  for (int n : {6, 8, 10, 12, 16}) {
-    const mdem::AnisotropicVdwKernel k(potential, lb, n);
-    std::cout << fmt::format("  {:6d}", n);
+  for (int n : {6, 8, 10, 12, 16, -12}) {  // -12: 8 points with the crossing rule of 12
+    mdem::AnisotropicVdwKernel k(potential, lb, n > 0 ? n : 8);
+    if (n < 0) k.enableCrossingRule(-n);
+    std::cout << fmt::format("  {:>6}", n > 0 ? std::to_string(n) : fmt::format("8+{}", -n));
     for (double deg : angles) {
       const double t = deg * 3.14159265358979323846 / 180.0;
       double lo = 1e300, hi = -1e300, force = 0.0;
@@ -234,12 +242,13 @@ int printKernelCurve(const mdem::Scene& s, const KernelCurveOptions& o) {
     } else {
       mdem::AnisotropicVdwKernel k(potential, lb, o.points);
       if (o.alignedWindow > 0.0) k.enableAlignedPath(la, o.alignedWindow);
+      if (o.crossingPoints > 0) k.enableCrossingRule(o.crossingPoints);
       sum = evaluatePairs([&k](const mdem::Segment& a, const mdem::Segment& b) { return mdem::anisotropicVdw(k, a, b); },
                           pairs, o.repeat, &out);
     }
-    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points, aligned window {} degrees: energy sum "
-                             "{:.10g} zJ\n",
-                             pairs.size(), o.repeat, o.path, o.points, std::max(0.0, o.alignedWindow),
+    std::cout << fmt::format("{} pairs x {} evaluations, {} path, {} points, aligned window {} degrees, crossing rule {} "
+                             "points: energy sum {:.10g} zJ\n",
+                             pairs.size(), o.repeat, o.path, o.points, std::max(0.0, o.alignedWindow), o.crossingPoints,
                              sum / o.repeat);
     return 0;
   }
@@ -281,6 +290,14 @@ int printKernelCurve(const mdem::Scene& s, const KernelCurveOptions& o) {
     const KernelError e = kernelError(line(mdem::gaussLegendre(n)), pairs, ref, scale, per);
     std::cout << fmt::format("line   {:6d}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", n, "-", "-",
                              e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
+              << std::flush;
+  }
+  for (int n : {10, 12, 16}) {
+    mdem::AnisotropicVdwKernel k(potential, lb, 8);
+    k.enableCrossingRule(n);
+    const KernelError e = kernelError(tableKernel(k), pairs, ref, scale, per);
+    std::cout << fmt::format("cross  {:>6}  {:>9}  {:>12}  {:10.3g}  {:11.3g}  {:10.3g}  {:8.1f}\n", fmt::format("8+{}", n), "-",
+                             "-", e.energyMax, e.energySum, e.forceMax, e.nsPerPair)
               << std::flush;
   }
   printAlignedWindowRows(potential, pairs, ref, scale, la, lb, per);

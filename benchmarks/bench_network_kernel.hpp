@@ -14,6 +14,7 @@ struct KernelCurveOptions {
   int repeat = 20;
   std::string path = "table";  // "table" (one lookup of D per point) or "line" (three of H)
   double alignedWindow = -1.0; // > 0: with `points`, the aligned path's window (degrees)
+  int crossingPoints = 0;      // > 0: with `points`, the crossing rule's points (table path)
   double seconds = 3.0;        // wall time per timed row (ns per pair)
 };
 

@@ -165,6 +165,7 @@ VdwContactEffect::VdwContactEffect(const Scene& scene, std::shared_ptr<ContactNe
                   ? std::make_unique<AnisotropicVdwKernel>(*tp.potential, la, lb, spec_.quadratureTolerance)
                   : std::make_unique<AnisotropicVdwKernel>(*tp.potential, lb, spec_.quadraturePoints);
           tp.kernelAgainst[partner]->enableAlignedPath(la, spec_.alignedWindowDegrees);
+          tp.kernelAgainst[partner]->enableCrossingRule(spec_.crossingQuadraturePoints);
         }
       }
     }

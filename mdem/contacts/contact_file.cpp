@@ -38,6 +38,8 @@ void validateContactSpec(const Scene& s) {
       requireRange(s, "vdw_contact.quadrature_tolerance", v.quadratureTolerance, 1e-4, 0.1,
                    "(fraction of the contact energy scale)");
     requireRange(s, "vdw_contact.aligned_window_deg", v.alignedWindowDegrees, 0.0, 10.0, "degrees");
+    if (v.crossingQuadraturePoints != 0)
+      requireRange(s, "vdw_contact.crossing_quadrature_points", v.crossingQuadraturePoints, 2, 64, "");
     requireRange(s, "vdw_contact.layer_spacing_nm", v.layerSpacing, 0.0, 2.0, "nm");
     requireRange(s, "vdw_contact.edge_width_nm", v.edgeWidth, 0.05, 5.0, "nm");
   }
@@ -111,7 +113,7 @@ void readNetworkTable(const TomlTable& root, Scene& s) {
 
 void readVdwContactTable(const TomlTable& t, Scene& s) {
   t.allowOnly({"form", "epsilon_meV", "sigma_nm", "surface_density_per_nm2", "switch_gap_nm",
-               "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg",
+               "cutoff_gap_nm", "quadrature_points", "quadrature_tolerance", "aligned_window_deg", "crossing_quadrature_points",
                "layer_spacing_nm", "edge_width_nm"});
   VdwContactSpec& v = s.contacts.vdw;
   const std::string form = t.stringOr("form", "anisotropic");
@@ -132,6 +134,7 @@ void readVdwContactTable(const TomlTable& t, Scene& s) {
       t.fail("quadrature_tolerance", fmt::format("{}", v.quadratureTolerance), "a fraction in [1e-4, 0.1]");
   }
   v.alignedWindowDegrees = t.numberOr("aligned_window_deg", v.alignedWindowDegrees);
+  v.crossingQuadraturePoints = static_cast<int>(t.integerOr("crossing_quadrature_points", v.crossingQuadraturePoints));
   v.layerSpacing = t.numberOr("layer_spacing_nm", v.layerSpacing);
   v.edgeWidth = t.numberOr("edge_width_nm", v.edgeWidth);
 }

@@ -39,6 +39,11 @@ struct VdwContactSpec {
   // the bundled 150-nm film fewer than 2 % of the interacting pairs lie within its 1.15-degree
   // limit, docs/benchmarks.md).
   double alignedWindowDegrees = 0.0;
+  // > 0: pairs crossing at more than 40 degrees use this many Gauss points instead, blended with
+  // the rule above between 20 and 40 degrees (AnisotropicVdwKernel::enableCrossingRule): the
+  // corrugation a sliding crossing feels falls with the points, while nearly parallel pairs are
+  // already accurate (docs/benchmarks.md, "The quadrature points and the stress-strain curve").
+  int crossingQuadraturePoints = 0;
   // Bricks (face-to-face form, face_contact.hpp): spacing of the two graphene layers of a
   // collapsed tube, and the width of the smooth edge of a face.
   double layerSpacing = 0.34;   // nm

@@ -179,6 +179,29 @@ ContactPairResult alignedBlend(const AnisotropicVdwKernel& k, const Segment& a, 
   r.torqueB -= gF * tb.cross(r0) + gC * tb.cross(ta);
   return r;
 }
+
+// E = w E_rule + (1 - w) E_crossing with w = w(sin^2 theta) (crossingWindow): the weight depends
+// on c = t_a.t_b alone, so its gradient adds (E_rule - E_crossing) dw/dc to dE/dt_a (times t_b)
+// and dE/dt_b (times t_a): torques only. `base` is the kernel's evaluation without the crossing
+// rule (the aligned path or the rule).
+template <class Base>
+ContactPairResult crossingBlend(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b, double farCutDistance,
+                                double sine2, Base base) {
+  double dw;
+  const double w = ramp(sine2, k.crossingWindow.sine2Full, k.crossingWindow.sine2Zero, &dw);
+  if (w == 0.0) return tableQuadrature(k.table, k.crossingRule, farCutDistance, a, b);
+  const ContactPairResult r = base();
+  if (w == 1.0) return r;
+  const ContactPairResult q = tableQuadrature(k.table, k.crossingRule, farCutDistance, a, b);
+  const double v = 1.0 - w, c = a.axis.dot(b.axis);
+  const double gC = (r.energy - q.energy) * dw * (-2.0 * c);  // d sin^2/d c = -2c
+  ContactPairResult out;
+  out.energy = w * r.energy + v * q.energy;
+  out.forceA = w * r.forceA + v * q.forceA, out.forceB = w * r.forceB + v * q.forceB;
+  out.torqueA = w * r.torqueA + v * q.torqueA - gC * a.axis.cross(b.axis);
+  out.torqueB = w * r.torqueB + v * q.torqueB - gC * b.axis.cross(a.axis);
+  return out;
+}
 }  // namespace
 
 ContactPairResult anisotropicVdw(const TubePairPotential& potential, const QuadratureRule& rule,
@@ -198,8 +221,23 @@ AnisotropicVdwKernel::AnisotropicVdwKernel(const TubePairPotential& p, double ha
 
 ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b) {
   if (b.halfLength != k.table.halfLength()) return anisotropicVdw(*k.potential, k.rule, a, b);
-  if (k.aligned && a.halfLength == k.aligned->halfLengthA()) return alignedBlend(k, a, b, farCut(*k.potential));
-  return tableQuadrature(k.table, k.rule, farCut(*k.potential), a, b);
+  const double cut = farCut(*k.potential);
+  const auto base = [&] {
+    if (k.aligned && a.halfLength == k.aligned->halfLengthA()) return alignedBlend(k, a, b, cut);
+    return tableQuadrature(k.table, k.rule, cut, a, b);
+  };
+  if (!k.crossingRule.x.empty()) {
+    const double c = a.axis.dot(b.axis), sine2 = 1.0 - c * c;
+    if (sine2 > k.crossingWindow.sine2Full) return crossingBlend(k, a, b, cut, sine2, base);
+  }
+  return base();
+}
+
+void AnisotropicVdwKernel::enableCrossingRule(int points) {
+  crossingRule = points > 0 ? gaussLegendre(points) : QuadratureRule{};
+  const double pi = 3.14159265358979323846, lo = kCrossingRampDegrees[0] * pi / 180.0, hi = kCrossingRampDegrees[1] * pi / 180.0;
+  crossingWindow.sine2Full = std::sin(lo) * std::sin(lo);
+  crossingWindow.sine2Zero = std::sin(hi) * std::sin(hi);
 }
 
 double alignedWeight(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b) {

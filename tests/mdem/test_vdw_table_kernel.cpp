@@ -14,6 +14,7 @@
 #include "common/errors.hpp"
 #include "contact_fixture.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/contact_effects.hpp"
 #include "mdem/contacts/contact_file.hpp"
 #include "mdem/scene_file.hpp"
 
@@ -164,6 +165,54 @@ TEST(MdemVdwTableKernel, PointsBeyondTheEarlyOutDistanceFromAnEndAreExactZeros) 
   EXPECT_GT(nonzeroJustInside, 1000);  // inside, the table is not zero: the test sees the edge
 }
 
+// The crossing rule (enableCrossingRule): below the ramp the kernel's rule alone, bit for bit;
+// beyond it the crossing rule alone, bit for bit; across it a blend whose forces and torques are
+// the energy's gradient, the weight's included (the test fails without it), and no jump at either
+// end of the ramp.
+TEST(MdemVdwTableKernel, CrossingRuleBlendsAcrossItsRampWithForcesFromTheEnergy) {
+  static const AnisotropicVdwKernel blended = [] {
+    AnisotropicVdwKernel k(tubePotential(), kHalf, 8);
+    k.enableCrossingRule(12);
+    return k;
+  }();
+  const double d = tubePotential().equilibriumDistance(), pi = 3.14159265358979323846;
+  const double scale = std::abs(tubePotential().wellDepthPerLength()) * kSegmentLength;
+  const Segment a = seg(Vec3(0.1, -0.2, 0.3), Vec3(1.0, 0.2, -0.1));
+  const Vec3 n = a.axis.unitOrthogonal(), m = a.axis.cross(n);
+  auto partner = [&](double degrees, double shift, double extra) {
+    const double t = degrees * pi / 180.0;
+    const Vec3 tb = std::cos(t) * a.axis + std::sin(t) * m;
+    return seg(a.centre + (d + extra) * n + shift * a.axis, tb);
+  };
+  auto energy = [](const Segment& x, const Segment& y) { return anisotropicVdw(blended, x, y).energy; };
+  int inRamp = 0;
+  for (double degrees : {10.0, 19.9, 22.0, 27.0, 31.0, 35.0, 39.9, 41.0, 60.0, 90.0})
+    for (double shift : {0.0, 0.45, 1.3})
+      for (double extra : {-0.03, 0.0013, 0.3}) {
+        SCOPED_TRACE(::testing::Message() << degrees << " degrees, shift " << shift << ", extra " << extra);
+        const Segment b = partner(degrees, shift, extra);
+        const ContactPairResult r = anisotropicVdw(blended, a, b);
+        ASSERT_NE(r.energy, 0.0);
+        if (degrees < kCrossingRampDegrees[0]) {
+          EXPECT_EQ(r.energy, anisotropicVdw(tableKernel(8), a, b).energy);
+        } else if (degrees > kCrossingRampDegrees[1]) {
+          EXPECT_EQ(r.energy, anisotropicVdw(tableKernel(12), a, b).energy);
+        } else {
+          ++inRamp;
+          const double e8 = anisotropicVdw(tableKernel(8), a, b).energy, e12 = anisotropicVdw(tableKernel(12), a, b).energy;
+          EXPECT_GE(r.energy, std::min(e8, e12) - 1e-12 * scale);
+          EXPECT_LE(r.energy, std::max(e8, e12) + 1e-12 * scale);
+        }
+        testing::expectPairForcesAreMinusGradient(r, a, b, energy, 1e-6, kHalf);
+      }
+  EXPECT_GE(inRamp, 15);
+  // No jump at the ramp's ends: 1e-7 degrees on either side.
+  for (double edge : {kCrossingRampDegrees[0], kCrossingRampDegrees[1]}) {
+    const double below = energy(a, partner(edge - 1e-7, 0.45, 0.0013)), above = energy(a, partner(edge + 1e-7, 0.45, 0.0013));
+    EXPECT_NEAR(below, above, 1e-8 * scale) << edge;
+  }
+}
+
 TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
   const TubePairPotential& p = tubePotential();
   const double scale = std::abs(p.wellDepthPerLength()) * kSegmentLength;
@@ -192,6 +241,53 @@ TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
                 anisotropicVdw(p, reference, geometries()[worstAt].first, geometries()[worstAt].second).energy);
     EXPECT_LE(worst, 3.0 * tol) << tol;
   }
+}
+
+// [vdw_contact] crossing_quadrature_points: read, validated, and wired into the effect's kernels.
+TEST(MdemVdwTableKernel, CrossingQuadraturePointsKeyIsReadAndValidated) {
+  Scene s = tubeScene({"bonds", "vdw_contact"});
+  s.contacts.vdw.crossingQuadraturePoints = 12;
+  EXPECT_NO_THROW(validateContactSpec(s));
+  for (int bad : {1, -3, 65}) {
+    s.contacts.vdw.crossingQuadraturePoints = bad;
+    try {
+      validateContactSpec(s);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("crossing_quadrature_points"), std::string::npos) << e.what();
+    }
+  }
+  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  const std::string anchor = "cutoff_gap_nm = 1.2\n";
+  ASSERT_NE(text.find(anchor), std::string::npos);
+  text.insert(text.find(anchor) + anchor.size(), "crossing_quadrature_points = 12\n");
+  const std::string path = (std::filesystem::temp_directory_path() / "mdem-crossing-points.toml").string();
+  std::ofstream(path) << text;
+  const Scene read = loadScene(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(read.contacts.vdw.crossingQuadraturePoints, 12);
+  // The crossed tubes of the example (45 degrees, beyond the ramp) get the 12-point energy.
+  const VdwContactEffect effect(read, std::make_shared<ContactNeighbourhood>(read, VdwContactEffect::interactionRange(read)), true);
+  ASSERT_GE(read.bodies.size(), 2);
+  // The closest pair of the two tubes (elements 0-7 and 8-15).
+  int i0 = -1, j0 = -1;
+  double lowest = 0.0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 8; j < read.bodies.size(); ++j)
+      if (const double e = effect.evaluatePair(read.bodies, i, j).energy; e < lowest) lowest = e, i0 = i, j0 = j;
+  ASSERT_GE(i0, 0);
+  Scene plain = read;
+  plain.contacts.vdw.crossingQuadraturePoints = 0;
+  const VdwContactEffect eight(plain, std::make_shared<ContactNeighbourhood>(plain, VdwContactEffect::interactionRange(plain)), true);
+  const Segment first = effect.neighbourhood().segment(read.bodies, i0);
+  const Segment b = effect.neighbourhood().imageNear(read.bodies, j0, first.centre);
+  const double e = effect.evaluatePair(read.bodies, i0, j0).energy;
+  EXPECT_NE(e, eight.evaluatePair(plain.bodies, i0, j0).energy);
+  // The effect orders the pair by filament (quadrature along the lower one): either order's 12 points.
+  EXPECT_TRUE(e == anisotropicVdw(tableKernel(12), first, b).energy || e == anisotropicVdw(tableKernel(12), b, first).energy);
 }
 
 TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsValidated) {
