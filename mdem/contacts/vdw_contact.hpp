@@ -83,7 +83,8 @@ struct AnisotropicVdwKernel {
   // beyond kCrossingRampDegrees[1] the pair uses `crossingRule` (`points` Gauss points) instead
   // of `rule`; below kCrossingRampDegrees[0] the rule (or the aligned path) alone; between, the
   // two blended with the same C2 ramp in sin^2 of the angle as the aligned path (forces and
-  // torques include the weight's gradient). 0 points switches it off.
+  // torques include the weight's gradient). 0 points switches it off. On the table path (partners
+  // of the table's half-length, as the contact effect's kernels always have).
   void enableCrossingRule(int points);
   QuadratureRule crossingRule;  // empty: off
   AlignedWindow crossingWindow;  // sin^2 bounds: the rule alone below sine2Full, crossingRule alone above sine2Zero
