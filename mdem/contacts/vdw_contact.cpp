@@ -183,17 +183,17 @@ ContactPairResult alignedBlend(const AnisotropicVdwKernel& k, const Segment& a, 
 // E = w E_rule + (1 - w) E_crossing with w = w(sin^2 theta) (crossingWindow): the weight depends
 // on c = t_a.t_b alone, so its gradient adds (E_rule - E_crossing) dw/dc to dE/dt_a (times t_b)
 // and dE/dt_b (times t_a): torques only. `base` is the kernel's evaluation without the crossing
-// rule (the aligned path or the rule).
+// rule (the aligned path or the rule); c = t_a.t_b.
 template <class Base>
 ContactPairResult crossingBlend(const AnisotropicVdwKernel& k, const Segment& a, const Segment& b, double farCutDistance,
-                                double sine2, Base base) {
+                                double c, Base base) {
   double dw;
-  const double w = ramp(sine2, k.crossingWindow.sine2Full, k.crossingWindow.sine2Zero, &dw);
+  const double w = ramp(1.0 - c * c, k.crossingWindow.sine2Full, k.crossingWindow.sine2Zero, &dw);
   if (w == 0.0) return tableQuadrature(k.table, k.crossingRule, farCutDistance, a, b);
   const ContactPairResult r = base();
   if (w == 1.0) return r;
   const ContactPairResult q = tableQuadrature(k.table, k.crossingRule, farCutDistance, a, b);
-  const double v = 1.0 - w, c = a.axis.dot(b.axis);
+  const double v = 1.0 - w;
   const double gC = (r.energy - q.energy) * dw * (-2.0 * c);  // d sin^2/d c = -2c
   ContactPairResult out;
   out.energy = w * r.energy + v * q.energy;
@@ -227,8 +227,8 @@ ContactPairResult anisotropicVdw(const AnisotropicVdwKernel& k, const Segment& a
     return tableQuadrature(k.table, k.rule, cut, a, b);
   };
   if (!k.crossingRule.x.empty()) {
-    const double c = a.axis.dot(b.axis), sine2 = 1.0 - c * c;
-    if (sine2 > k.crossingWindow.sine2Full) return crossingBlend(k, a, b, cut, sine2, base);
+    const double c = a.axis.dot(b.axis);
+    if (1.0 - c * c > k.crossingWindow.sine2Full) return crossingBlend(k, a, b, cut, c, base);
   }
   return base();
 }

@@ -243,29 +243,43 @@ TEST(MdemVdwTableKernel, ToleranceChoosesTheFewestPointsMeetingIt) {
   }
 }
 
+// validateContactSpec refuses each value `set` puts into the spec, naming `key`.
+template <class Set, class Value>
+void expectContactSpecRefuses(Scene s, Set set, std::initializer_list<Value> bad, const std::string& key) {
+  for (Value v : bad) {
+    set(s.contacts.vdw, v);
+    try {
+      validateContactSpec(s);
+      ADD_FAILURE() << key << " = " << v;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
+// examples/crossed-tubes.toml with `keys` added to its [vdw_contact] table, written to a temporary file.
+std::string crossedTubesWithKeys(const std::string& keys, const std::string& name) {
+  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
+  EXPECT_TRUE(in.good());
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  const std::string anchor = "cutoff_gap_nm = 1.2\n";
+  EXPECT_NE(text.find(anchor), std::string::npos);
+  text.insert(text.find(anchor) + anchor.size(), keys);
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
 // [vdw_contact] crossing_quadrature_points: read, validated, and wired into the effect's kernels.
 TEST(MdemVdwTableKernel, CrossingQuadraturePointsKeyIsReadAndValidated) {
   Scene s = tubeScene({"bonds", "vdw_contact"});
   s.contacts.vdw.crossingQuadraturePoints = 12;
   EXPECT_NO_THROW(validateContactSpec(s));
-  for (int bad : {1, -3, 65}) {
-    s.contacts.vdw.crossingQuadraturePoints = bad;
-    try {
-      validateContactSpec(s);
-      ADD_FAILURE() << bad;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("crossing_quadrature_points"), std::string::npos) << e.what();
-    }
-  }
-  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  const std::string anchor = "cutoff_gap_nm = 1.2\n";
-  ASSERT_NE(text.find(anchor), std::string::npos);
-  text.insert(text.find(anchor) + anchor.size(), "crossing_quadrature_points = 12\n");
-  const std::string path = (std::filesystem::temp_directory_path() / "mdem-crossing-points.toml").string();
-  std::ofstream(path) << text;
+  expectContactSpecRefuses(s, [](VdwContactSpec& v, int n) { v.crossingQuadraturePoints = n; }, {1, -3, 65},
+                           "crossing_quadrature_points");
+  const std::string path = crossedTubesWithKeys("crossing_quadrature_points = 12\n", "mdem-crossing-points.toml");
   const Scene read = loadScene(path);
   std::filesystem::remove(path);
   EXPECT_EQ(read.contacts.vdw.crossingQuadraturePoints, 12);
@@ -294,33 +308,15 @@ TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsValidated) {
   Scene s = tubeScene({"bonds", "vdw_contact"});
   s.contacts.vdw.quadratureTolerance = 1e-3;
   EXPECT_NO_THROW(validateContactSpec(s));
-  for (double bad : {-1e-3, 0.5, std::nan("")}) {
-    s.contacts.vdw.quadratureTolerance = bad;
-    try {
-      validateContactSpec(s);
-      ADD_FAILURE() << bad;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("quadrature_tolerance"), std::string::npos) << e.what();
-    }
-  }
+  expectContactSpecRefuses(s, [](VdwContactSpec& v, double x) { v.quadratureTolerance = x; }, {-1e-3, 0.5, std::nan("")},
+                           "quadrature_tolerance");
 }
 
 // The scene key: read from [vdw_contact]; with quadrature_points too, or out of range, an InputError
 // naming it.
 TEST(MdemVdwTableKernel, QuadratureToleranceKeyIsRead) {
-  std::ifstream in(std::string(MESOCHAIN_SOURCE_DIR) + "/examples/crossed-tubes.toml");
-  ASSERT_TRUE(in.good());
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string example = buffer.str(), anchor = "cutoff_gap_nm = 1.2\n";
-  ASSERT_NE(example.find(anchor), std::string::npos);
-  const std::string path = (std::filesystem::temp_directory_path() / "mdem-quadrature-tolerance.toml").string();
-  auto withKeys = [&](const std::string& keys) {
-    std::string text = example;
-    text.insert(text.find(anchor) + anchor.size(), keys);
-    std::ofstream(path) << text;
-    return path;
-  };
+  std::string path;
+  auto withKeys = [&](const std::string& keys) { return path = crossedTubesWithKeys(keys, "mdem-quadrature-tolerance.toml"); };
   EXPECT_EQ(loadScene(withKeys("")).contacts.vdw.quadratureTolerance, 0.0);
   EXPECT_EQ(loadScene(withKeys("quadrature_tolerance = 0.01\n")).contacts.vdw.quadratureTolerance, 0.01);
   for (const char* bad : {"quadrature_tolerance = 0.01\nquadrature_points = 6\n", "quadrature_tolerance = 0.5\n",
