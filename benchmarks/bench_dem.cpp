@@ -1,5 +1,6 @@
 // `mesochain-bench dem`: element-steps per second of bonded filaments (10^4 and 10^5 elements
-// in total), on 1 thread and on OpenMP threads.
+// in total), on 1 thread and on OpenMP threads; `--lammps PREFIX` writes the same filaments for
+// LAMMPS's bpm/rotational (bench/lammps/in.chain-bpm).
 //
 // Instructions per element-step: run with a fixed step count under callgrind, e.g.
 //   valgrind --tool=callgrind build/mesochain-bench dem --totals 10000 --threads 1 --repeats 1 --steps 20
@@ -11,6 +12,7 @@
 #include <ctime>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +29,7 @@
 #endif
 
 #include "app/cli/command.hpp"
+#include "mdem/lammps_export.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::app {
@@ -39,9 +42,11 @@ struct BenchOptions {
   double seconds = 2.0;
   long steps = 0;   // > 0: a fixed number of steps per measurement (for callgrind) instead of time
   int repeats = 3;  // measurements per case; the median is printed
+  bool bondsOnly = false;  // without local damping: the work of LAMMPS's bpm/rotational peer
+  std::string lammps;      // prefix of the LAMMPS export (then nothing is timed)
 };
 
-mdem::Scene benchScene(int total, int perFilament) {
+mdem::Scene benchScene(int total, int perFilament, bool bondsOnly) {
   mdem::Scene s;
   mdem::ElementType t;
   t.name = "brick", t.thickness = 0.8, t.width = 2.4, t.length = 2.0, t.mass = 0.01;
@@ -61,6 +66,7 @@ mdem::Scene benchScene(int total, int perFilament) {
     s.bodies.setAngularVelocityWorld(i, 0.01 * mdem::Vec3(std::cos(1.1 * i), std::sin(0.9 * i), 0.5));
   }
   s.effects = {"bonds", "local_damping"};
+  if (bondsOnly) s.effects = {"bonds"};
   s.run.timeStepFraction = 0.5;
   return s;
 }
@@ -142,14 +148,29 @@ Command makeBenchDemCommand() {
     (*dem)->add_option("--seconds", opt->seconds, "time per measurement");
     (*dem)->add_option("--steps", opt->steps, "fixed steps per measurement instead of --seconds");
     (*dem)->add_option("--repeats", opt->repeats, "measurements per case (median printed)");
+    (*dem)->add_flag("--bonds-only", opt->bondsOnly,
+                     "bonds alone, without the local damping (the work of LAMMPS's bpm/rotational peer)");
+    (*dem)->add_option("--lammps", opt->lammps,
+                       "write PREFIX-<elements>.data/.settings for bench/lammps/in.chain-bpm and exit");
   };
   c.selected = [dem] { return *dem && (*dem)->parsed(); };
   c.run = [opt] {
+    if (!opt->lammps.empty()) {
+      for (int total : opt->totals) {
+        const mdem::Scene s = benchScene(total, opt->filamentLength, opt->bondsOnly);
+        const mdem::Simulation sim(s);
+        const std::string prefix = fmt::format("{}-{}", opt->lammps, total);
+        mdem::writeLammpsBpmChains(s, sim.timeStep(), prefix);
+        std::cout << fmt::format("wrote {}.data and {}.settings (time step {:.6g} ns)\n", prefix, prefix,
+                                 sim.timeStep());
+      }
+      return 0;
+    }
     std::cout << "element-steps per second: wall clock (median, min .. max of the repeats) and per\n"
                  "CPU second of the busiest thread (median)\n"
                  "elements  filaments  threads      wall/s  min .. max                 cpu/s\n";
     for (int total : opt->totals) {
-      const mdem::Scene s = benchScene(total, opt->filamentLength);
+      const mdem::Scene s = benchScene(total, opt->filamentLength, opt->bondsOnly);
       const int filaments = (total + opt->filamentLength - 1) / opt->filamentLength;
       std::vector<int> threadCounts{1};
       if (opt->threads != 1) threadCounts.push_back(opt->threads);

@@ -37,18 +37,20 @@ Vec3 Prescribed::angularVelocityAt(double t) const {
 }
 
 KinematicMap::KinematicMap(const Boundary& b, int n)
-    : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0) {
+    : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0), constrained(n, 0) {
   for (const FixedDofs& f : b.fixed) {
     fixed[f.element] = &f;
+    constrained[f.element] = 1;
     if (f.fixed[3] || f.fixed[4] || f.fixed[5]) kinematicRotation[f.element] = 1;
   }
   for (const Prescribed& p : b.prescribed) {
     prescribed[p.element] = &p;
     kinematicRotation[p.element] = 1;
+    constrained[p.element] = 1;
   }
 }
 
-void KinematicMap::applyElement(Bodies& s, int i, double t) const {
+void KinematicMap::applyConstrained(Bodies& s, int i, double t) const {
   if (const Prescribed* p = prescribed[i]) {
     s.velocity[i] = p->velocityAt(t);
     s.setAngularVelocityWorld(i, p->angularVelocityAt(t));
@@ -92,7 +94,7 @@ Vec3 constrainedAngularVelocity(const Bodies& s, int i, const std::array<bool, 6
   return w;
 }
 
-void KinematicMap::clearElement(int i, Vec3& force, Vec3& torque) const {
+void KinematicMap::clearConstrained(int i, Vec3& force, Vec3& torque) const {
   if (prescribed[i]) {
     force.setZero();
     torque.setZero();

@@ -1,10 +1,11 @@
-// `mesochain-bench network --lammps PREFIX`: writes the benchmark network as the input of its
+// `mesochain-bench network --lammps PREFIX` writes the benchmark network as the input of its
 // LAMMPS peer (bench/lammps/in.network, README.md there): point particles at the element centres
 // (one per element, element mass), harmonic bonds along each tube and harmonic angles at each
 // inner element, and a pair table U(r) between elements, the isotropic form of mesochain's
 // tube-tube potential (vdw_contact.hpp: two parallel elements side by side at centre distance r).
 // LAMMPS "units nano" are nm, ag, ns, ag nm^2/ns^2 = zJ: the mDEM units (docs/mdem-units.md), so
-// every number is written as is.
+// every number is written as is. `mesochain-bench dem --lammps PREFIX` writes its bonded filaments
+// for bench/lammps/in.chain-bpm (writeLammpsBpmChains below).
 #include "mdem/lammps_export.hpp"
 
 #include <cmath>
@@ -140,6 +141,69 @@ void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& 
   const std::string tableName = prefix.substr(prefix.find_last_of('/') + 1) + ".table";
   s << fmt::format("pair_coeff 1 1 {} VDW {:.6f}\n", tableName, rc);
   s << fmt::format("neighbor {} bin\n", scene.contacts.skin);
+  s << fmt::format("timestep {:.9g}\n", timeStep);
+}
+
+// bpm/rotational (LAMMPS BPM package; Wang 2009, Wang & Mora 2009) is a linear spring for the
+// normal and the shear displacement and for the twist and bend angles, per bond:
+//   k_r (force/distance), k_s (force/distance), k_t and k_b (force*distance/radian).
+// A parallel bond of section A, I_x, I_y, J and stiffness k_n, k_s per unit area (parallel_bond.hpp,
+// Potyondy & Cundall 2004) has, for small deformations, k_n A, k_s A, k_s J and k_n I: the BPM bond
+// is isotropic in bending, so k_b takes the mean of k_n I_x and k_n I_y. Damping and breaking off
+// (gammas 0, `break no`): the peer does the bond's elastic work only, as the bench's elements do
+// without local damping (`mesochain-bench dem --bonds-only`).
+void writeLammpsBpmChains(const Scene& scene, double timeStep, const std::string& prefix) {
+  const Bodies& b = scene.bodies;
+  const int n = b.size();
+  if (scene.bonds.empty()) throw std::runtime_error("LAMMPS BPM export: the scene has no bonds");
+  const Bond& first = scene.bonds.front();
+  for (const Bond& bond : scene.bonds)
+    if (std::abs(bond.restLength - first.restLength) > 1e-9 * first.restLength || bond.k.kn != first.k.kn ||
+        bond.k.ks != first.k.ks || bond.section.area != first.section.area)
+      throw std::runtime_error("LAMMPS BPM export: bonds of one rest length, stiffness and section only");
+  std::vector<int> molecule(n, 0);
+  int chains = 0;
+  {
+    std::vector<char> joinedToPrevious(n, 0);
+    for (const Bond& bond : scene.bonds)
+      if (std::abs(bond.a - bond.b) == 1) joinedToPrevious[std::max(bond.a, bond.b)] = 1;
+    for (int i = 0; i < n; ++i) molecule[i] = joinedToPrevious[i] ? molecule[i - 1] : ++chains;
+  }
+  const double diameter = first.restLength, radius = 0.5 * diameter;
+  Vec3 lo = b.position[0], hi = b.position[0];
+  for (const Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  lo.array() -= 2.0 * diameter, hi.array() += 2.0 * diameter;
+
+  std::ofstream d = openOut(prefix + ".data");
+  d << "LAMMPS data file: mesochain-bench dem, " << n << " elements in " << chains
+    << " filaments as bpm/sphere (bench/lammps/README.md)\n\n";
+  d << fmt::format("{} atoms\n{} bonds\n1 atom types\n1 bond types\n\n", n, scene.bonds.size());
+  for (int k = 0; k < 3; ++k) d << fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
+  // bpm/sphere data columns: id molecule type diameter density x y z.
+  d << "\nAtoms # bpm/sphere\n\n";
+  for (int i = 0; i < n; ++i) {
+    const double density = b.mass[i] / (4.0 / 3.0 * units::kPi * radius * radius * radius);
+    d << fmt::format("{} {} 1 {:.9g} {:.12g} {:.9f} {:.9f} {:.9f}\n", i + 1, molecule[i], diameter, density,
+                     b.position[i].x(), b.position[i].y(), b.position[i].z());
+  }
+  d << "\nVelocities\n\n";
+  for (int i = 0; i < n; ++i) {
+    const Vec3 w = b.angularVelocityWorld(i);
+    d << fmt::format("{} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}\n", i + 1, b.velocity[i].x(), b.velocity[i].y(),
+                     b.velocity[i].z(), w.x(), w.y(), w.z());
+  }
+  d << "\nBonds\n\n";
+  for (std::size_t k = 0; k < scene.bonds.size(); ++k)
+    d << fmt::format("{} 1 {} {}\n", k + 1, scene.bonds[k].a + 1, scene.bonds[k].b + 1);
+
+  const BondSection& sec = first.section;
+  const double kr = first.k.kn * sec.area, ks = first.k.ks * sec.area, kt = first.k.ks * sec.j;
+  const double kb = first.k.kn * 0.5 * (sec.ix + sec.iy);
+  std::ofstream s = openOut(prefix + ".settings");
+  s << "# mesochain-bench dem: bpm/rotational coefficients and time step (written by `mesochain-bench dem --lammps`)\n";
+  s << "# k_r k_s (pN/nm) k_t k_b (pN nm/rad); critical forces and torques unused (break no); gammas 0\n";
+  s << fmt::format("bond_coeff 1 {:.9g} {:.9g} {:.9g} {:.9g} 1 1 1 1 0 0 0 0\n", kr, ks, kt, kb);
+  s << fmt::format("comm_modify vel yes cutoff {:.6f}\n", 1.5 * diameter);
   s << fmt::format("timestep {:.9g}\n", timeStep);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Export of an mDEM tube network for the LAMMPS peer of `mesochain-bench network`
-// (bench/lammps/README.md): the same network as point particles with bonds, angles and a pair table.
+// Exports of the mDEM benchmarks' scenes for their LAMMPS peers (bench/lammps/README.md): the tube
+// network of `mesochain-bench network` as point particles with bonds, angles and a pair table; the
+// bonded filaments of `mesochain-bench dem` as BPM spheres with `bpm/rotational` bonds.
 #include <string>
 
 #include "mdem/scene.hpp"
@@ -10,5 +11,11 @@ namespace mesochain::mdem {
 // Writes PREFIX.data (atoms, bonds, angles), PREFIX.table (pair table "VDW") and
 // PREFIX.settings (bond/angle/pair coefficients, skin, time step `timeStep` in ns).
 void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& prefix);
+
+// Writes PREFIX.data (atom_style bpm/sphere: one sphere per element, the element's mass, diameter
+// the bond's rest length; bonds as the scene's) and PREFIX.settings (bond_style bpm/rotational
+// coefficients mapped from the parallel bonds, time step `timeStep` in ns) for
+// bench/lammps/in.chain-bpm. Bonds of one rest length and stiffness only.
+void writeLammpsBpmChains(const Scene& scene, double timeStep, const std::string& prefix);
 
 }  // namespace mesochain::mdem

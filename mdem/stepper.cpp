@@ -77,6 +77,14 @@ inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& 
   gatherBlock(state, fx, plan, km, lo, hi, t, gatherSeconds);
   Bodies& s = state.bodies;
   for (int i = lo; i < hi; ++i) {
+    if (!last && !km.constrained[i]) {
+      // closeStep then openStep of a free element: the two half kicks share their force and
+      // orientation, so the increment is formed once and added twice (the same sums, bit for
+      // bit, as two kickElement calls: a run resumed between them gives the same state).
+      kickElementTwice(s, i, 0.5 * h);
+      driftElement(s, i, h, false);
+      continue;
+    }
     closeStep(s, i, t, km, h);
     if (!last) openStep(s, i, t, km, h);
   }
