@@ -73,6 +73,60 @@ inline void freeRotorStepCayley(Quat& quat, Vec3& pi, const Vec3& inverseInertia
   const double inv = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   quat = {q[0] * inv, q[1] * inv, q[2] * inv, q[3] * inv};
 }
+// rotateAboutCayley for two elements at once, lane k = element k: each lane does exactly the
+// operations of the scalar version in the same order (so each element's result is bit for bit
+// the same), written as loops over the lanes so that the compiler packs them into one vector
+// operation each (one division for both elements). Two independent chains of dependent
+// divisions then overlap instead of waiting on each other.
+template <int I, int Next>
+inline void rotateAboutCayleyPair(double (&q)[4][2], double (&pi)[3][2], double (&a)[2], const double (&nextCoefficient)[2]) {
+  constexpr int J = (I + 1) % 3, K = (I + 2) % 3;
+  double inv[2], nj[2], nk[2];
+  for (int k = 0; k < 2; ++k) {
+    const double a2 = a[k] * a[k];
+    inv[k] = 1.0 / (1.0 + a2);
+    const double oneMinus = 1.0 - a2, twoA = 2.0 * a[k];
+    nj[k] = oneMinus * pi[J][k] + twoA * pi[K][k];
+    nk[k] = oneMinus * pi[K][k] - twoA * pi[J][k];
+  }
+  for (int k = 0; k < 2; ++k) {
+    pi[J][k] = nj[k] * inv[k];
+    pi[K][k] = nk[k] * inv[k];
+    const double w = q[0][k], qi = q[1 + I][k], qj = q[1 + J][k], qk = q[1 + K][k];
+    q[0][k] = w - a[k] * qi;
+    q[1 + I][k] = qi + a[k] * w;
+    q[1 + J][k] = qj + a[k] * qk;
+    q[1 + K][k] = qk - a[k] * qj;
+  }
+  for (int k = 0; k < 2; ++k) {
+    if constexpr (Next == J) a[k] = (nextCoefficient[k] * nj[k]) * inv[k];
+    if constexpr (Next == K) a[k] = (nextCoefficient[k] * nk[k]) * inv[k];
+  }
+}
+
+// freeRotorStepCayley of two elements (quat0, pi0, inverseInertia0 and quat1, ...), bit for bit.
+inline void freeRotorStepCayleyPair(Quat& quat0, Vec3& pi0, const Vec3& inverseInertia0, Quat& quat1, Vec3& pi1,
+                                    const Vec3& inverseInertia1, double h) {
+  double q[4][2] = {{quat0.w, quat1.w}, {quat0.x, quat1.x}, {quat0.y, quat1.y}, {quat0.z, quat1.z}};
+  double pi[3][2] = {{pi0[0], pi1[0]}, {pi0[1], pi1[1]}, {pi0[2], pi1[2]}};
+  const double kx[2] = {0.25 * h * inverseInertia0[0], 0.25 * h * inverseInertia1[0]};
+  const double ky[2] = {0.25 * h * inverseInertia0[1], 0.25 * h * inverseInertia1[1]};
+  const double kz[2] = {0.5 * h * inverseInertia0[2], 0.5 * h * inverseInertia1[2]};
+  const double none[2] = {0.0, 0.0};
+  double a[2] = {kx[0] * pi[0][0], kx[1] * pi[0][1]};
+  rotateAboutCayleyPair<0, 1>(q, pi, a, ky);
+  rotateAboutCayleyPair<1, 2>(q, pi, a, kz);
+  rotateAboutCayleyPair<2, 1>(q, pi, a, ky);
+  rotateAboutCayleyPair<1, 0>(q, pi, a, kx);
+  rotateAboutCayleyPair<0, -1>(q, pi, a, none);
+  double inv[2];
+  for (int k = 0; k < 2; ++k)
+    inv[k] = 1.0 / std::sqrt(q[0][k] * q[0][k] + q[1][k] * q[1][k] + q[2][k] * q[2][k] + q[3][k] * q[3][k]);
+  quat0 = {q[0][0] * inv[0], q[1][0] * inv[0], q[2][0] * inv[0], q[3][0] * inv[0]};
+  quat1 = {q[0][1] * inv[1], q[1][1] * inv[1], q[2][1] * inv[1], q[3][1] * inv[1]};
+  pi0 = Vec3(pi[0][0], pi[1][0], pi[2][0]);
+  pi1 = Vec3(pi[0][1], pi[1][1], pi[2][1]);
+}
 }  // namespace
 
 void freeRotorStep(Quat& q, Vec3& pi, const Vec3& inertia, double h) {
@@ -101,6 +155,20 @@ void driftElement(Bodies& s, int i, double h, bool kinematicRotation) {
     freeRotorStepCayley(q, pi, inverseInertia, h);
     s.accumulatedRotation[i] += 0.5 * h * (w0 + rotate(q, pi.cwiseProduct(inverseInertia)));
   }
+}
+
+void driftFreePair(Bodies& s, int i, double h) {
+  const int j = i + 1;
+  s.position[i] += h * s.velocity[i];
+  s.position[j] += h * s.velocity[j];
+  const Vec3 inverseInertiaI = s.inertia[i].cwiseInverse(), inverseInertiaJ = s.inertia[j].cwiseInverse();
+  Quat &qi = s.orientation[i], &qj = s.orientation[j];
+  Vec3 &pi = s.angularMomentumBody[i], &pj = s.angularMomentumBody[j];
+  const Vec3 w0i = rotate(qi, pi.cwiseProduct(inverseInertiaI));
+  const Vec3 w0j = rotate(qj, pj.cwiseProduct(inverseInertiaJ));
+  freeRotorStepCayleyPair(qi, pi, inverseInertiaI, qj, pj, inverseInertiaJ, h);
+  s.accumulatedRotation[i] += 0.5 * h * (w0i + rotate(qi, pi.cwiseProduct(inverseInertiaI)));
+  s.accumulatedRotation[j] += 0.5 * h * (w0j + rotate(qj, pj.cwiseProduct(inverseInertiaJ)));
 }
 
 void drift(Bodies& s, double h, const std::vector<char>& kinematicRotation) {

@@ -68,6 +68,9 @@ void freeRotorStepExact(Quat& q, Vec3& pi, const Vec3& inertia, double h);
 // (kinematicRotation[i] != 0), by q <- exp(h omega_world) q. Accumulates the rotation probe.
 void driftElement(Bodies& s, int i, double h, bool kinematicRotation);
 void drift(Bodies& s, double h, const std::vector<char>& kinematicRotation);
+// driftElement(s, i, h, false) and driftElement(s, i + 1, h, false), bit for bit, with the two
+// free-rotor chains interleaved (and packed into vector operations) so that their divisions overlap.
+void driftFreePair(Bodies& s, int i, double h);
 
 // Kinetic energies (zJ): translational 1/2 m v^2 and rotational 1/2 sum pi_i^2 / I_i.
 double kineticTranslational(const Bodies& s);
