@@ -65,8 +65,7 @@ mdem::Scene benchScene(int total, int perFilament, bool bondsOnly) {
     s.bodies.velocity[i] = 0.01 * mdem::Vec3(std::sin(1.3 * i), std::cos(0.7 * i), std::sin(0.3 * i));
     s.bodies.setAngularVelocityWorld(i, 0.01 * mdem::Vec3(std::cos(1.1 * i), std::sin(0.9 * i), 0.5));
   }
-  s.effects = {"bonds", "local_damping"};
-  if (bondsOnly) s.effects = {"bonds"};
+  s.effects = bondsOnly ? std::vector<std::string>{"bonds"} : std::vector<std::string>{"bonds", "local_damping"};
   s.run.timeStepFraction = 0.5;
   return s;
 }

@@ -37,16 +37,14 @@ Vec3 Prescribed::angularVelocityAt(double t) const {
 }
 
 KinematicMap::KinematicMap(const Boundary& b, int n)
-    : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0), constrained(n, 0) {
+    : fixed(n, nullptr), prescribed(n, nullptr), kinematicRotation(n, 0) {
   for (const FixedDofs& f : b.fixed) {
     fixed[f.element] = &f;
-    constrained[f.element] = 1;
     if (f.fixed[3] || f.fixed[4] || f.fixed[5]) kinematicRotation[f.element] = 1;
   }
   for (const Prescribed& p : b.prescribed) {
     prescribed[p.element] = &p;
     kinematicRotation[p.element] = 1;
-    constrained[p.element] = 1;
   }
 }
 

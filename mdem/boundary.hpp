@@ -76,19 +76,19 @@ struct KinematicMap {
   std::vector<const FixedDofs*> fixed;         // per element or nullptr
   std::vector<const Prescribed*> prescribed;   // per element or nullptr
   std::vector<char> kinematicRotation;         // per element
-  std::vector<char> constrained;               // per element: 1 when fixed or prescribed
 
   KinematicMap(const Boundary& b, int elementCount);
+  bool constrained(int i) const { return fixed[i] || prescribed[i]; }
   // Overwrites constrained velocities for time t (after a half kick), of one element or all.
   // Inline test first: the stepper calls it twice per element-step, and most elements are free.
   void applyElement(Bodies& s, int i, double t) const {
-    if (constrained[i]) applyConstrained(s, i, t);
+    if (constrained(i)) applyConstrained(s, i, t);
   }
   void apply(Bodies& s, double t) const;
   // Zeroes force / torque components on fixed and prescribed DOFs (for reporting and for the
   // damping, which must see the unbalanced force only), of one element or all.
   void clearElement(int i, Vec3& force, Vec3& torque) const {
-    if (constrained[i]) clearConstrained(i, force, torque);
+    if (constrained(i)) clearConstrained(i, force, torque);
   }
   void clearConstrainedForces(Bodies& s) const;
 

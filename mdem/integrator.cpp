@@ -35,102 +35,110 @@ inline void rotateAboutExact(int axis, Quat& q, Vec3& pi, const Vec3& inertia, d
 // Written for latency (the five sub-rotations are one dependent chain): the rotated pi_J, pi_K
 // are numerators times 1/(1 + a^2), so that one multiplication follows the division, and the
 // next sub-rotation's parameter, nextCoefficient * pi_Next, is formed from its numerator in
-// parallel with the division. Returns it (0 if none). (It differs from nextCoefficient times
+// parallel with the division; a becomes it (0 if none). (It differs from nextCoefficient times
 // the stored pi_Next by rounding only: time reversal still holds to round-off.)
-template <int I, int Next>
-inline double rotateAboutCayley(double (&q)[4], Vec3& pi, double a, double nextCoefficient) {
-  constexpr int J = (I + 1) % 3, K = (I + 2) % 3;
-  const double a2 = a * a;
-  const double inv = 1.0 / (1.0 + a2);
-  const double oneMinus = 1.0 - a2, twoA = 2.0 * a;
-  const double nj = oneMinus * pi[J] + twoA * pi[K];
-  const double nk = oneMinus * pi[K] - twoA * pi[J];
-  pi[J] = nj * inv;
-  pi[K] = nk * inv;
-  // Quaternion components: q[0] = w, q[1 + axis] = vector part.
-  const double w = q[0], qi = q[1 + I], qj = q[1 + J], qk = q[1 + K];
-  q[0] = w - a * qi;
-  q[1 + I] = qi + a * w;
-  q[1 + J] = qj + a * qk;
-  q[1 + K] = qk - a * qj;
-  if constexpr (Next == J) return (nextCoefficient * nj) * inv;
-  if constexpr (Next == K) return (nextCoefficient * nk) * inv;
-  return 0.0;
-}
+// N elements at once, lane k = element k, each statement a loop over the lanes: every lane does
+// the same operations in the same order whatever N is (so an element's result does not depend
+// on its partners), and for N = 2 the compiler packs each loop into one vector operation (one
+// division for both elements), so that two chains of dependent divisions overlap.
+template <int N>
+struct RotorLanes {
+  double q[4][N];   // q[0] = w, q[1 + axis] = vector part
+  double pi[3][N];
+  double a[N];
+};
 
-// The Cayley free-rotor step with the inverse principal moments given.
-inline void freeRotorStepCayley(Quat& quat, Vec3& pi, const Vec3& inverseInertia, double h) {
-  double q[4] = {quat.w, quat.x, quat.y, quat.z};
-  // a = (tau / 2) pi_i / I_i with tau = h/2 (x and y) or h (z).
-  const double kx = 0.25 * h * inverseInertia[0], ky = 0.25 * h * inverseInertia[1];
-  const double kz = 0.5 * h * inverseInertia[2];
-  double a = kx * pi[0];
-  a = rotateAboutCayley<0, 1>(q, pi, a, ky);
-  a = rotateAboutCayley<1, 2>(q, pi, a, kz);
-  a = rotateAboutCayley<2, 1>(q, pi, a, ky);
-  a = rotateAboutCayley<1, 0>(q, pi, a, kx);
-  rotateAboutCayley<0, -1>(q, pi, a, 0.0);
-  const double inv = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  quat = {q[0] * inv, q[1] * inv, q[2] * inv, q[3] * inv};
-}
-// rotateAboutCayley for two elements at once, lane k = element k: each lane does exactly the
-// operations of the scalar version in the same order (so each element's result is bit for bit
-// the same), written as loops over the lanes so that the compiler packs them into one vector
-// operation each (one division for both elements). Two independent chains of dependent
-// divisions then overlap instead of waiting on each other.
-template <int I, int Next>
-inline void rotateAboutCayleyPair(double (&q)[4][2], double (&pi)[3][2], double (&a)[2], const double (&nextCoefficient)[2]) {
+template <int I, int Next, int N>
+[[gnu::always_inline]] inline void rotateAboutCayley(RotorLanes<N>& r, const double (&nextCoefficient)[N]) {
   constexpr int J = (I + 1) % 3, K = (I + 2) % 3;
-  double inv[2], nj[2], nk[2];
-  for (int k = 0; k < 2; ++k) {
-    const double a2 = a[k] * a[k];
+  double inv[N], nj[N], nk[N];
+  for (int k = 0; k < N; ++k) {
+    const double a2 = r.a[k] * r.a[k];
     inv[k] = 1.0 / (1.0 + a2);
-    const double oneMinus = 1.0 - a2, twoA = 2.0 * a[k];
-    nj[k] = oneMinus * pi[J][k] + twoA * pi[K][k];
-    nk[k] = oneMinus * pi[K][k] - twoA * pi[J][k];
+    const double oneMinus = 1.0 - a2, twoA = 2.0 * r.a[k];
+    nj[k] = oneMinus * r.pi[J][k] + twoA * r.pi[K][k];
+    nk[k] = oneMinus * r.pi[K][k] - twoA * r.pi[J][k];
   }
-  for (int k = 0; k < 2; ++k) {
-    pi[J][k] = nj[k] * inv[k];
-    pi[K][k] = nk[k] * inv[k];
-    const double w = q[0][k], qi = q[1 + I][k], qj = q[1 + J][k], qk = q[1 + K][k];
-    q[0][k] = w - a[k] * qi;
-    q[1 + I][k] = qi + a[k] * w;
-    q[1 + J][k] = qj + a[k] * qk;
-    q[1 + K][k] = qk - a[k] * qj;
+  for (int k = 0; k < N; ++k) {
+    r.pi[J][k] = nj[k] * inv[k];
+    r.pi[K][k] = nk[k] * inv[k];
+    const double a = r.a[k], w = r.q[0][k], qi = r.q[1 + I][k], qj = r.q[1 + J][k], qk = r.q[1 + K][k];
+    r.q[0][k] = w - a * qi;
+    r.q[1 + I][k] = qi + a * w;
+    r.q[1 + J][k] = qj + a * qk;
+    r.q[1 + K][k] = qk - a * qj;
   }
-  for (int k = 0; k < 2; ++k) {
-    if constexpr (Next == J) a[k] = (nextCoefficient[k] * nj[k]) * inv[k];
-    if constexpr (Next == K) a[k] = (nextCoefficient[k] * nk[k]) * inv[k];
+  for (int k = 0; k < N; ++k) {
+    if constexpr (Next == J) r.a[k] = (nextCoefficient[k] * nj[k]) * inv[k];
+    if constexpr (Next == K) r.a[k] = (nextCoefficient[k] * nk[k]) * inv[k];
+    if constexpr (Next != J && Next != K) r.a[k] = 0.0;
   }
 }
 
-// freeRotorStepCayley of two elements (quat0, pi0, inverseInertia0 and quat1, ...), bit for bit.
-inline void freeRotorStepCayleyPair(Quat& quat0, Vec3& pi0, const Vec3& inverseInertia0, Quat& quat1, Vec3& pi1,
-                                    const Vec3& inverseInertia1, double h) {
-  double q[4][2] = {{quat0.w, quat1.w}, {quat0.x, quat1.x}, {quat0.y, quat1.y}, {quat0.z, quat1.z}};
-  double pi[3][2] = {{pi0[0], pi1[0]}, {pi0[1], pi1[1]}, {pi0[2], pi1[2]}};
-  const double kx[2] = {0.25 * h * inverseInertia0[0], 0.25 * h * inverseInertia1[0]};
-  const double ky[2] = {0.25 * h * inverseInertia0[1], 0.25 * h * inverseInertia1[1]};
-  const double kz[2] = {0.5 * h * inverseInertia0[2], 0.5 * h * inverseInertia1[2]};
-  const double none[2] = {0.0, 0.0};
-  double a[2] = {kx[0] * pi[0][0], kx[1] * pi[0][1]};
-  rotateAboutCayleyPair<0, 1>(q, pi, a, ky);
-  rotateAboutCayleyPair<1, 2>(q, pi, a, kz);
-  rotateAboutCayleyPair<2, 1>(q, pi, a, ky);
-  rotateAboutCayleyPair<1, 0>(q, pi, a, kx);
-  rotateAboutCayleyPair<0, -1>(q, pi, a, none);
-  double inv[2];
-  for (int k = 0; k < 2; ++k)
-    inv[k] = 1.0 / std::sqrt(q[0][k] * q[0][k] + q[1][k] * q[1][k] + q[2][k] * q[2][k] + q[3][k] * q[3][k]);
-  quat0 = {q[0][0] * inv[0], q[1][0] * inv[0], q[2][0] * inv[0], q[3][0] * inv[0]};
-  quat1 = {q[0][1] * inv[1], q[1][1] * inv[1], q[2][1] * inv[1], q[3][1] * inv[1]};
-  pi0 = Vec3(pi[0][0], pi[1][0], pi[2][0]);
-  pi1 = Vec3(pi[0][1], pi[1][1], pi[2][1]);
+// The Cayley free-rotor step of the N elements loaded into r (q then normalised), with
+// k_x, k_y, k_z = (h/4, h/4, h/2) times each element's inverse principal moments: the parameter
+// of a sub-rotation is (tau / 2) pi_i / I_i with tau = h/2 (x and y) or h (z).
+template <int N>
+[[gnu::always_inline]] inline void freeRotorStepCayley(RotorLanes<N>& r, const double (&kx)[N], const double (&ky)[N],
+                                                       const double (&kz)[N]) {
+  const double none[N] = {};
+  for (int k = 0; k < N; ++k) r.a[k] = kx[k] * r.pi[0][k];
+  rotateAboutCayley<0, 1>(r, ky);
+  rotateAboutCayley<1, 2>(r, kz);
+  rotateAboutCayley<2, 1>(r, ky);
+  rotateAboutCayley<1, 0>(r, kx);
+  rotateAboutCayley<0, -1>(r, none);
+  double inv[N];
+  for (int k = 0; k < N; ++k)
+    inv[k] = 1.0 / std::sqrt(r.q[0][k] * r.q[0][k] + r.q[1][k] * r.q[1][k] + r.q[2][k] * r.q[2][k] + r.q[3][k] * r.q[3][k]);
+  for (int k = 0; k < N; ++k)
+    for (int c = 0; c < 4; ++c) r.q[c][k] *= inv[k];
+}
+
+// Loads one element into lane k, and stores it back.
+template <int N>
+inline void loadLane(RotorLanes<N>& r, int k, const Quat& q, const Vec3& pi) {
+  r.q[0][k] = q.w, r.q[1][k] = q.x, r.q[2][k] = q.y, r.q[3][k] = q.z;
+  r.pi[0][k] = pi[0], r.pi[1][k] = pi[1], r.pi[2][k] = pi[2];
+}
+template <int N>
+inline void storeLane(const RotorLanes<N>& r, int k, Quat& q, Vec3& pi) {
+  q = {r.q[0][k], r.q[1][k], r.q[2][k], r.q[3][k]};
+  pi = Vec3(r.pi[0][k], r.pi[1][k], r.pi[2][k]);
+}
+
+// The drift of the free elements i .. i + N - 1: x += h v, the free rotor, and the rotation probe
+// by the trapezoid rule of the world angular velocity before and after.
+template <int N>
+[[gnu::always_inline]] inline void driftFree(Bodies& s, int i, double h) {
+  RotorLanes<N> r;
+  Vec3 inverseInertia[N], w0[N];
+  double kx[N], ky[N], kz[N];
+  for (int k = 0; k < N; ++k) {
+    s.position[i + k] += h * s.velocity[i + k];
+    inverseInertia[k] = s.inertia[i + k].cwiseInverse();
+    w0[k] = rotate(s.orientation[i + k], s.angularMomentumBody[i + k].cwiseProduct(inverseInertia[k]));
+    loadLane(r, k, s.orientation[i + k], s.angularMomentumBody[i + k]);
+    kx[k] = 0.25 * h * inverseInertia[k][0], ky[k] = 0.25 * h * inverseInertia[k][1];
+    kz[k] = 0.5 * h * inverseInertia[k][2];
+  }
+  freeRotorStepCayley(r, kx, ky, kz);
+  for (int k = 0; k < N; ++k) {
+    storeLane(r, k, s.orientation[i + k], s.angularMomentumBody[i + k]);
+    const Vec3 w1 = rotate(s.orientation[i + k], s.angularMomentumBody[i + k].cwiseProduct(inverseInertia[k]));
+    s.accumulatedRotation[i + k] += 0.5 * h * (w0[k] + w1);
+  }
 }
 }  // namespace
 
 void freeRotorStep(Quat& q, Vec3& pi, const Vec3& inertia, double h) {
-  freeRotorStepCayley(q, pi, inertia.cwiseInverse(), h);
+  const Vec3 inverseInertia = inertia.cwiseInverse();
+  const double kx[1] = {0.25 * h * inverseInertia[0]}, ky[1] = {0.25 * h * inverseInertia[1]};
+  const double kz[1] = {0.5 * h * inverseInertia[2]};
+  RotorLanes<1> r;
+  loadLane(r, 0, q, pi);
+  freeRotorStepCayley(r, kx, ky, kz);
+  storeLane(r, 0, q, pi);
 }
 
 void freeRotorStepExact(Quat& q, Vec3& pi, const Vec3& inertia, double h) {
@@ -143,33 +151,15 @@ void freeRotorStepExact(Quat& q, Vec3& pi, const Vec3& inertia, double h) {
 }
 
 void driftElement(Bodies& s, int i, double h, bool kinematicRotation) {
+  if (!kinematicRotation) return driftFree<1>(s, i, h);
   s.position[i] += h * s.velocity[i];
-  const Vec3 inverseInertia = s.inertia[i].cwiseInverse();
   Quat& q = s.orientation[i];
-  Vec3& pi = s.angularMomentumBody[i];
-  const Vec3 w0 = rotate(q, pi.cwiseProduct(inverseInertia));  // omega_world before
-  if (kinematicRotation) {
-    q = normalized(expMap(h * w0) * q);
-    s.accumulatedRotation[i] += h * w0;
-  } else {
-    freeRotorStepCayley(q, pi, inverseInertia, h);
-    s.accumulatedRotation[i] += 0.5 * h * (w0 + rotate(q, pi.cwiseProduct(inverseInertia)));
-  }
+  const Vec3 w0 = rotate(q, s.angularMomentumBody[i].cwiseProduct(s.inertia[i].cwiseInverse()));  // omega_world
+  q = normalized(expMap(h * w0) * q);
+  s.accumulatedRotation[i] += h * w0;
 }
 
-void driftFreePair(Bodies& s, int i, double h) {
-  const int j = i + 1;
-  s.position[i] += h * s.velocity[i];
-  s.position[j] += h * s.velocity[j];
-  const Vec3 inverseInertiaI = s.inertia[i].cwiseInverse(), inverseInertiaJ = s.inertia[j].cwiseInverse();
-  Quat &qi = s.orientation[i], &qj = s.orientation[j];
-  Vec3 &pi = s.angularMomentumBody[i], &pj = s.angularMomentumBody[j];
-  const Vec3 w0i = rotate(qi, pi.cwiseProduct(inverseInertiaI));
-  const Vec3 w0j = rotate(qj, pj.cwiseProduct(inverseInertiaJ));
-  freeRotorStepCayleyPair(qi, pi, inverseInertiaI, qj, pj, inverseInertiaJ, h);
-  s.accumulatedRotation[i] += 0.5 * h * (w0i + rotate(qi, pi.cwiseProduct(inverseInertiaI)));
-  s.accumulatedRotation[j] += 0.5 * h * (w0j + rotate(qj, pj.cwiseProduct(inverseInertiaJ)));
-}
+void driftFreePair(Bodies& s, int i, double h) { driftFree<2>(s, i, h); }
 
 void drift(Bodies& s, double h, const std::vector<char>& kinematicRotation) {
 #pragma omp parallel for schedule(static) if (s.size() > 512)

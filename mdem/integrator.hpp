@@ -42,20 +42,27 @@
 
 namespace mesochain::mdem {
 
-// v += h F / m, pi += h R^T tau for one element and for every element.
+// The kick's increments of element i over h: dv = (h / m) F, dL = h R(q)^T tau.
+struct KickIncrement {
+  Vec3 velocity, angularMomentumBody;
+};
+inline KickIncrement kickIncrement(const Bodies& s, int i, double h) {
+  return {(h / s.mass[i]) * s.force[i], h * rotateInverse(s.orientation[i], s.torque[i])};
+}
+// v += h F / m, pi += h R^T tau for one element (and, kick below, for every element).
 inline void kickElement(Bodies& s, int i, double h) {
-  s.velocity[i] += (h / s.mass[i]) * s.force[i];
-  s.angularMomentumBody[i] += h * rotateInverse(s.orientation[i], s.torque[i]);
+  const KickIncrement d = kickIncrement(s, i, h);
+  s.velocity[i] += d.velocity;
+  s.angularMomentumBody[i] += d.angularMomentumBody;
 }
 // kickElement(s, i, h) twice with the increments formed once: v + dv + dv, L + dL + dL (the same
 // rounding as two calls, since force, torque and orientation do not change between them).
 inline void kickElementTwice(Bodies& s, int i, double h) {
-  const Vec3 dv = (h / s.mass[i]) * s.force[i];
-  const Vec3 dl = h * rotateInverse(s.orientation[i], s.torque[i]);
-  s.velocity[i] += dv;
-  s.velocity[i] += dv;
-  s.angularMomentumBody[i] += dl;
-  s.angularMomentumBody[i] += dl;
+  const KickIncrement d = kickIncrement(s, i, h);
+  s.velocity[i] += d.velocity;
+  s.velocity[i] += d.velocity;
+  s.angularMomentumBody[i] += d.angularMomentumBody;
+  s.angularMomentumBody[i] += d.angularMomentumBody;
 }
 void kick(Bodies& s, double h);
 

@@ -8,6 +8,7 @@
 // for bench/lammps/in.chain-bpm (writeLammpsBpmChains below).
 #include "mdem/lammps_export.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -45,6 +46,30 @@ struct RestTypes {
     return it->second;
   }
 };
+
+// Molecule ids (from 1) along the element order: a new molecule wherever no bond joins i - 1 and i
+// (tubes and filaments are laid out as consecutive elements). `count` receives the number.
+std::vector<int> chainMolecules(const Scene& scene, int* count) {
+  const int n = scene.bodies.size();
+  std::vector<char> joinedToPrevious(n, 0);
+  for (const Bond& bond : scene.bonds)
+    if (std::abs(bond.a - bond.b) == 1) joinedToPrevious[std::max(bond.a, bond.b)] = 1;
+  std::vector<int> molecule(n, 0);
+  int molecules = 0;
+  for (int i = 0; i < n; ++i) molecule[i] = joinedToPrevious[i] ? molecule[i - 1] : ++molecules;
+  if (count) *count = molecules;
+  return molecule;
+}
+
+// The element centres' bounding box widened by `pad` on every side, as LAMMPS data-file lines.
+std::string boxLines(const Bodies& b, double pad) {
+  Vec3 lo = b.position[0], hi = b.position[0];
+  for (const Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  lo.array() -= pad, hi.array() += pad;
+  std::string out;
+  for (int k = 0; k < 3; ++k) out += fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
+  return out;
+}
 }  // namespace
 
 void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& prefix) {
@@ -54,16 +79,10 @@ void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& 
   for (int i = 0; i < n; ++i)
     if (b.type[i] != 0) throw std::runtime_error("LAMMPS export: networks of one element type only");
 
-  // Bonded neighbours along the tubes; molecules = tubes (a new one where no bond joins i-1, i).
+  // Bonded neighbours along the tubes; molecules = tubes.
   std::vector<std::vector<int>> neighbours(n);
   for (const Bond& bond : scene.bonds) neighbours[bond.a].push_back(bond.b), neighbours[bond.b].push_back(bond.a);
-  std::vector<int> molecule(n, 0);
-  int tubes = 0;
-  for (int i = 0; i < n; ++i) {
-    bool joined = false;
-    for (int j : neighbours[i]) joined = joined || j == i - 1;
-    molecule[i] = joined ? molecule[i - 1] : ++tubes;
-  }
+  const std::vector<int> molecule = chainMolecules(scene, nullptr);
 
   // Stiffness of the parallel bond (parallel_bond.hpp) mapped onto point particles:
   //   stretching 1/2 k_n A (r - r0)^2    -> bond_style harmonic K = k_n A / 2,
@@ -89,15 +108,11 @@ void writeLammpsNetwork(const Scene& scene, double timeStep, const std::string& 
     angles.push_back({angleTypes.of(angle), a + 1, i + 1, c + 1});
   }
 
-  Vec3 lo = b.position[0], hi = b.position[0];
-  for (const Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  lo.array() -= 5.0, hi.array() += 5.0;
-
   std::ofstream d = openOut(prefix + ".data");
   d << "LAMMPS data file: mesochain-bench network, " << n << " elements (bench/lammps/README.md)\n\n";
   d << fmt::format("{} atoms\n{} bonds\n{} angles\n1 atom types\n{} bond types\n{} angle types\n\n", n, bonds.size(),
                    angles.size(), bondTypes.rest.size(), angleTypes.rest.size());
-  for (int k = 0; k < 3; ++k) d << fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
+  d << boxLines(b, 5.0);
   d << fmt::format("\nMasses\n\n1 {:.10g}\n\nAtoms # molecular\n\n", type.mass);
   for (int i = 0; i < n; ++i)
     d << fmt::format("{} {} 1 {:.9f} {:.9f} {:.9f}\n", i + 1, molecule[i], b.position[i].x(), b.position[i].y(),
@@ -157,28 +172,21 @@ void writeLammpsBpmChains(const Scene& scene, double timeStep, const std::string
   const int n = b.size();
   if (scene.bonds.empty()) throw std::runtime_error("LAMMPS BPM export: the scene has no bonds");
   const Bond& first = scene.bonds.front();
+  const BondSection& sec = first.section;
   for (const Bond& bond : scene.bonds)
     if (std::abs(bond.restLength - first.restLength) > 1e-9 * first.restLength || bond.k.kn != first.k.kn ||
-        bond.k.ks != first.k.ks || bond.section.area != first.section.area)
+        bond.k.ks != first.k.ks || bond.section.area != sec.area || bond.section.ix != sec.ix ||
+        bond.section.iy != sec.iy || bond.section.j != sec.j)
       throw std::runtime_error("LAMMPS BPM export: bonds of one rest length, stiffness and section only");
-  std::vector<int> molecule(n, 0);
   int chains = 0;
-  {
-    std::vector<char> joinedToPrevious(n, 0);
-    for (const Bond& bond : scene.bonds)
-      if (std::abs(bond.a - bond.b) == 1) joinedToPrevious[std::max(bond.a, bond.b)] = 1;
-    for (int i = 0; i < n; ++i) molecule[i] = joinedToPrevious[i] ? molecule[i - 1] : ++chains;
-  }
+  const std::vector<int> molecule = chainMolecules(scene, &chains);
   const double diameter = first.restLength, radius = 0.5 * diameter;
-  Vec3 lo = b.position[0], hi = b.position[0];
-  for (const Vec3& p : b.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  lo.array() -= 2.0 * diameter, hi.array() += 2.0 * diameter;
 
   std::ofstream d = openOut(prefix + ".data");
   d << "LAMMPS data file: mesochain-bench dem, " << n << " elements in " << chains
     << " filaments as bpm/sphere (bench/lammps/README.md)\n\n";
   d << fmt::format("{} atoms\n{} bonds\n1 atom types\n1 bond types\n\n", n, scene.bonds.size());
-  for (int k = 0; k < 3; ++k) d << fmt::format("{:.6f} {:.6f} {}lo {}hi\n", lo[k], hi[k], "xyz"[k], "xyz"[k]);
+  d << boxLines(b, 2.0 * diameter);
   // bpm/sphere data columns: id molecule type diameter density x y z.
   d << "\nAtoms # bpm/sphere\n\n";
   for (int i = 0; i < n; ++i) {
@@ -196,7 +204,6 @@ void writeLammpsBpmChains(const Scene& scene, double timeStep, const std::string
   for (std::size_t k = 0; k < scene.bonds.size(); ++k)
     d << fmt::format("{} 1 {} {}\n", k + 1, scene.bonds[k].a + 1, scene.bonds[k].b + 1);
 
-  const BondSection& sec = first.section;
   const double kr = first.k.kn * sec.area, ks = first.k.ks * sec.area, kt = first.k.ks * sec.j;
   const double kb = first.k.kn * 0.5 * (sec.ix + sec.iy);
   std::ofstream s = openOut(prefix + ".settings");

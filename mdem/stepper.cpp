@@ -77,13 +77,13 @@ inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& 
   gatherBlock(state, fx, plan, km, lo, hi, t, gatherSeconds);
   Bodies& s = state.bodies;
   for (int i = lo; i < hi; ++i) {
-    if (!last && !km.constrained[i]) {
+    if (!last && !km.constrained(i)) {
       // closeStep then openStep of a free element: the two half kicks share their force and
       // orientation, so the increment is formed once and added twice (the same sums, bit for
       // bit, as two kickElement calls: a run resumed between them gives the same state).
       // Two free neighbours drift together (driftFreePair: the same results, overlapped).
       kickElementTwice(s, i, 0.5 * h);
-      if (i + 1 < hi && !km.constrained[i + 1]) {
+      if (i + 1 < hi && !km.constrained(i + 1)) {
         kickElementTwice(s, i + 1, 0.5 * h);
         driftFreePair(s, i, h);
         ++i;
