@@ -4,6 +4,7 @@
 // element gathers its bonds' contributions in a fixed order (gatherElement), so results do not
 // depend on the number of OpenMP threads. Bonds join elements of one filament only, so a scene
 // of separate filaments may run barrier-free (stepper.hpp).
+#include <algorithm>
 #include <vector>
 
 #include "mdem/effect.hpp"
@@ -18,12 +19,16 @@ class BondEffect : public Effect {
 
   int itemCount() const override { return size(); }
   void computeItems(const State& state, double, int lo, int hi) override {
-    for (int k = lo; k < hi; ++k) computeBond(state.bodies, k);
+    int k = lo;
+    for (; k + 1 < hi; k += 2) computeBondPair(state.bodies, k, k + 1);
+    if (k < hi) computeBond(state.bodies, k);
   }
   void computeItemList(const State& state, double, const int* items, int count) override {
-    for (int e = 0; e < count; ++e) computeBond(state.bodies, items[e]);
+    int e = 0;
+    for (; e + 1 < count; e += 2) computeBondPair(state.bodies, items[e], items[e + 1]);
+    if (e < count) computeBond(state.bodies, items[e]);
   }
-  int itemElement(int k) const override { return bonds_[k].a; }
+  int itemElement(int k) const override { return std::min(bonds_[k].a, bonds_[k].b); }
   void gather(const State&, double, int lo, int hi, Vec3* force, Vec3* torque) const override {
     for (int i = lo; i < hi; ++i) gatherElement(i, force[i], torque[i]);
   }
@@ -43,6 +48,15 @@ class BondEffect : public Effect {
                                     s.orientation[b.b]);
     b.theta = r.theta;  // follow the branch of the relative rotation
     results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
+  }
+  // Bonds k and l (k != l) together: the same results as computeBond of each (bondForcesPair).
+  void computeBondPair(const Bodies& s, int k, int l) {
+    Bond &b = bonds_[k], &c = bonds_[l];
+    BondForces r, q;
+    bondForcesPair(b, c, s, r, q);
+    b.theta = r.theta, c.theta = q.theta;
+    results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
+    results_[l] = {q.forceA, q.torqueA, q.forceB, q.torqueB};
   }
   // Adds the buffered forces and torques of element i's bonds (in a fixed order).
   void gatherElement(int i, Vec3& force, Vec3& torque) const {

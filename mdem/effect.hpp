@@ -66,6 +66,8 @@ class Effect {
   // Dissipative physical forces (dashpots): their damping rate limits the step as tightly as
   // the bonds do, so multiple time stepping leaves them on the inner step unless named.
   virtual bool dissipates() const { return false; }
+  // The lowest-numbered element item k touches (-1: none); with couplesFilaments() false, the
+  // elements it touches are bonded to it (ThreadPartition computes items by this element).
   virtual int itemElement(int /*k*/) const { return -1; }
   virtual void computeItemList(const State& state, double time, const int* items, int count) {
     for (int e = 0; e < count; ++e) computeItems(state, time, items[e], items[e] + 1);

@@ -108,6 +108,11 @@ struct BondForces {
 BondForces bondForces(const Bond& bond, const Vec3& xa, const Quat& qa, const Vec3& xb,
                       const Quat& qb);
 
+// Two bonds at once (their elements' positions and orientations from s): each result bit for bit
+// that of bondForces, the two computed lane by lane so that their arithmetic shares two-wide
+// vector operations.
+void bondForcesPair(const Bond& b0, const Bond& b1, const Bodies& s, BondForces& r0, BondForces& r1);
+
 // Stiffness matrix (12 x 12, world frame, DOF order u_a, phi_a, u_b, phi_b with phi small
 // world-frame rotations) of the bond linearised about its rest state in the current
 // orientation of a: K = B^T D B with d = (u_b + phi_b x s_b) - (u_a + phi_a x s_a),

@@ -210,6 +210,13 @@ ThreadPartition partitionElements(int n, const std::vector<Bond>& bonds, const E
     for (int t = 0; t < p.threads; ++t) start[t + 1] += start[t];
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (int k = 0; k < items; ++k) order[fill[owner[e->itemElement(k)]]++] = k;
+    // Each part's items by their lowest element, the order in which its block sweep computes them.
+    for (int t = 0; t < p.threads; ++t)
+      std::stable_sort(order.begin() + start[t], order.begin() + start[t + 1],
+                       [e](int x, int y) { return e->itemElement(x) < e->itemElement(y); });
+    std::vector<int> lowest(items);
+    for (int m = 0; m < items; ++m) lowest[m] = e->itemElement(order[m]);
+    p.itemLowest.push_back(std::move(lowest));
     p.itemStart.push_back(std::move(start));
     p.itemOrder.push_back(std::move(order));
   }
@@ -246,7 +253,10 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
   Bodies& s = state.bodies;
   const int n = s.size();
   const double t0 = state.time;
-  if (partition && partition->independent && partition->threads > 1 && n > kParallelThreshold && fx.ratio == 1) {
+  // The barrier-free sweep, also on one thread (items computed block by block stay in cache),
+  // except for a one-thread profile, which the phase-by-phase scheme below splits by phase.
+  if (partition && partition->independent && n > kParallelThreshold && fx.ratio == 1 &&
+      (partition->threads > 1 || !profile)) {
     const ThreadPartition& p = *partition;
     const double start = omp_get_wtime();
 #pragma omp parallel num_threads(p.threads)
@@ -256,15 +266,28 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
         const int lo = p.elementStart[part], hi = p.elementStart[part + 1];
         double t = t0;
         for (int i = lo; i < hi; ++i) openStep(s, i, t, km, h);
+        std::vector<int> next(fx.withItems.size());
         for (long k = 0; k < steps; ++k) {
           t += h;
-          for (std::size_t e = 0; e < fx.withItems.size(); ++e) {
-            const std::vector<int>& start = p.itemStart[e];
-            fx.withItems[e]->computeItemList(state, t, p.itemOrder[e].data() + start[part],
-                                             start[part + 1] - start[part]);
-          }
           const bool last = k + 1 == steps;
-          for (int b = lo; b < hi; b += kBlock) finishBlock(state, fx, fx.boundary, km, b, std::min(hi, b + kBlock), t, h, last);
+          for (std::size_t e = 0; e < fx.withItems.size(); ++e) next[e] = p.itemStart[e][part];
+          // One sweep over the part's blocks: before a block's gathers and kicks, the items whose
+          // lowest element lies below the block's end (all its elements' items; every element
+          // an item touches is at or above its lowest, so none has drifted yet). The items'
+          // data and results are still in cache when the block gathers them.
+          for (int b = lo; b < hi; b += kBlock) {
+            const int end = std::min(hi, b + kBlock);
+            for (std::size_t e = 0; e < fx.withItems.size(); ++e) {
+              const int* order = p.itemOrder[e].data();
+              const int* lowest = p.itemLowest[e].data();
+              const int stop = p.itemStart[e][part + 1];
+              int m = next[e];
+              while (m < stop && lowest[m] < end) ++m;
+              fx.withItems[e]->computeItemList(state, t, order + next[e], m - next[e]);
+              next[e] = m;
+            }
+            finishBlock(state, fx, fx.boundary, km, b, end, t, h, last);
+          }
         }
       }
     }

@@ -69,7 +69,8 @@ struct ThreadPartition {
   bool independent = false;       // false: no balanced cut exists (use the barrier scheme)
   std::vector<int> elementStart;  // threads + 1 entries
   // Per effect of EffectSequence::withItems: threads + 1 offsets into its item order.
-  std::vector<std::vector<int>> itemStart, itemOrder;
+  // Each part's items in the order of their lowest element (Effect::itemElement), and that element.
+  std::vector<std::vector<int>> itemStart, itemOrder, itemLowest;
 };
 
 // Cuts the elements into `threads` ranges no bond crosses, each within 10% of the even share

@@ -212,5 +212,29 @@ TEST(MdemParallelBond, SmallAngleLogSeriesMatchesClosedForm) {
   }
 }
 
+TEST(MdemParallelBond, PairedKernelEqualsTwoSingleKernelsBitForBit) {
+  // Every pair of the kernel cases (small angles, the series branch's edge, several turns), in
+  // both orders and with itself: the paired kernel gives each bond exactly its single result.
+  const std::vector<Deformed> cases = kernelCases();
+  const auto same = [](const Vec3& u, const Vec3& v) { return u[0] == v[0] && u[1] == v[1] && u[2] == v[2]; };
+  for (const Deformed& c0 : cases)
+    for (const Deformed& c1 : cases) {
+      Bodies s;
+      ElementType t;
+      t.mass = 1.0, t.thickness = 1.0, t.width = 1.0, t.length = 2.0;
+      s.add(0, t, c0.xa, c0.qa), s.add(0, t, c0.xb, c0.qb), s.add(0, t, c1.xa, c1.qa), s.add(0, t, c1.xb, c1.qb);
+      Bond b0 = c0.bond, b1 = c1.bond;
+      b0.a = 0, b0.b = 1, b1.a = 2, b1.b = 3;
+      BondForces p0, p1;
+      bondForcesPair(b0, b1, s, p0, p1);
+      const BondForces r0 = bondForces(b0, c0.xa, c0.qa, c0.xb, c0.qb), r1 = bondForces(b1, c1.xa, c1.qa, c1.xb, c1.qb);
+      for (const auto& [p, r] : {std::pair{&p0, &r0}, std::pair{&p1, &r1}}) {
+        EXPECT_TRUE(same(p->theta, r->theta));
+        EXPECT_TRUE(same(p->forceA, r->forceA) && same(p->forceB, r->forceB));
+        EXPECT_TRUE(same(p->torqueA, r->torqueA) && same(p->torqueB, r->torqueB));
+      }
+    }
+}
+
 }  // namespace
 }  // namespace mesochain::mdem
