@@ -203,6 +203,10 @@ TEST(CliChain, ExamplesPassCheck) {
   for (const char* stage : {"reference", "stretch", "twist", "bend_soft", "bend_hard", "beam", "cantilever", "knobs"})
     EXPECT_NE(out.find(std::string("  ") + stage), std::string::npos) << stage << "\n" << out;
   EXPECT_FALSE(fs::exists(examples + "chain-collapsed-3030"));  // --check computes and writes nothing
+  // The double-walled collapsed tube: the same protocol on its own 260-atom cell.
+  ASSERT_EQ(runMesochain("chain " + examples + "chain-collapsed-dwnt.toml --check", dir, out), 0) << out;
+  EXPECT_NE(out.find("collapsed-dwnt-3535-3030.toml"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(examples + "chain-collapsed-dwnt"));
   ASSERT_EQ(runMesochain("chain " + examples + "chain-graphene-bilayer.toml --check", dir, out), 0) << out;
   EXPECT_NE(out.find("bend_soft"), std::string::npos) << out;
   EXPECT_NE(out.find("beam = false"), std::string::npos) << out;
