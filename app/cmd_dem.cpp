@@ -21,6 +21,7 @@
 #include "app/exit_codes.hpp"
 #include "common/errors.hpp"
 #include "common/progress_bar.hpp"
+#include "mdem/checkpoint.hpp"
 #include "mdem/contacts/film_statistics.hpp"
 #include "mdem/run.hpp"
 #include "mdem/scene_file.hpp"
@@ -120,6 +121,9 @@ Command makeDemCommand() {
     // The steps done before a resume are not timed here: the ETA extrapolates those run since.
     options.resumedAt = [&bar](double fraction) { bar.skip(static_cast<int>(std::lround(fraction * 100))); };
     options.status = [&status](const std::string& line) { status = line; };
+    options.resumedFrom = [](const std::string& commit) {
+      if (const std::string note = mdem::resumedBuildNote(commit); !note.empty()) std::cerr << note << "\n";
+    };
     options.stopRequested = &stopRequested;
     stopRequested.store(false);
     const auto previousInt = std::signal(SIGINT, requestStop);
@@ -141,7 +145,12 @@ Command makeDemCommand() {
     if (!r.removedStale.empty())
       std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
                                r.removedStale.front());
-    if (r.resumedFromStep >= 0) std::cout << fmt::format("resumed from the checkpoint at step {}\n", r.resumedFromStep);
+    if (r.resumedFromStep >= 0)
+      std::cout << fmt::format("resumed from the checkpoint at step {}{}\n", r.resumedFromStep,
+                               mdem::resumedBuildNote(r.resumedFromCommit).empty()
+                                   ? ""
+                                   : " (written by another build: " +
+                                         (r.resumedFromCommit.empty() ? std::string("unknown") : r.resumedFromCommit) + ")");
     const mdem::EnergyLedger& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",

@@ -7,13 +7,16 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.hpp"
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
 
 namespace mesochain::mdem {
 
 namespace {
 constexpr char kMagic[8] = {'M', 'D', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr std::uint32_t kVersion = 2;  // 2: multiple time stepping (held outer forces, cycle start)
+// 2: multiple time stepping (held outer forces, cycle start); 3: the writing build's commit.
+constexpr std::uint32_t kVersion = 3;
+constexpr std::uint32_t kOldestReadable = 2;  // format 2 is read as written by an unknown build
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 template <class T>
@@ -96,6 +99,7 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
   out.write(kVersion);
   out.write(kByteOrder);
   out.write(sceneFingerprint(scene));
+  out.write(std::string(buildCommit()));
   BinaryWriter first;
   if (prelude) prelude(first);
   out.writeVector(first.bytes());
@@ -137,8 +141,10 @@ CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : pa
     throw InputError(path, "checkpoint", "a checksum that does not match (the file is corrupt or truncated)",
                      "an intact checkpoint");
   BinaryReader in(bytes.data() + sizeof(kMagic), bytes.size() - sizeof(kMagic) - 8, path);
-  if (const auto v = in.read<std::uint32_t>(); v != kVersion)
-    throw InputError(path, "checkpoint", fmt::format("format version {}", v), fmt::format("version {}", kVersion));
+  const auto version = in.read<std::uint32_t>();
+  if (version < kOldestReadable || version > kVersion)
+    throw InputError(path, "checkpoint", fmt::format("format version {}", version),
+                     fmt::format("version {} to {}", kOldestReadable, kVersion));
   if (in.read<std::uint32_t>() != kByteOrder)
     throw InputError(path, "checkpoint", "another byte order", "a checkpoint written on a machine of this byte order");
   if (in.read<std::uint64_t>() != sceneFingerprint(scene))
@@ -146,9 +152,19 @@ CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : pa
                      "a checkpoint of another scene (the scene or model file, its elements, bonds, effects or time "
                      "step changed since it was written)",
                      "the unchanged scene of the interrupted run, or a fresh run without --resume");
+  if (version >= 3) writtenBy_ = in.read<std::string>();
   prelude_ = in.readVector<unsigned char>("prelude");
   state_ = in.readVector<unsigned char>("state");
   tail_ = in.readVector<unsigned char>("run section");
+}
+
+std::string resumedBuildNote(const std::string& commit) {
+  if (commit == buildCommit()) return "";
+  return fmt::format("note: the checkpoint was written by {}, this is mesochain commit {}: the run continues from "
+                     "it, but it repeats an uninterrupted run bit for bit only on the build that wrote the checkpoint",
+                     commit.empty() ? std::string("an earlier build (checkpoint format 2, no commit recorded)")
+                                    : "mesochain commit " + commit,
+                     buildCommit());
 }
 
 void CheckpointFile::restore(Simulation& sim) const {

@@ -10,6 +10,7 @@
 // Nothing in a run draws random numbers, so there is no RNG state to keep.
 //
 // Binary file: magic "MDEMCKPT", format version, byte-order mark, the scene's fingerprint, the
+// commit of the build that wrote it (format 3; format 2 files are read without one), the
 // sections, and an FNV-1a checksum of all bytes before it. Written atomically (temporary file +
 // rename), so a kill while writing leaves the previous checkpoint. A truncated or corrupt file, a
 // checkpoint of another scene (fingerprint: the scene and model file text, the element types,
@@ -48,14 +49,22 @@ class CheckpointFile {
   // the checkpoint's.
   void restore(Simulation& sim) const;
   BinaryReader tail() const { return section(tail_); }
+  // The commit of the build that wrote it (common/build_info.hpp); empty for format 2. Only
+  // the same build continues a run bit for bit as the uninterrupted run would have.
+  const std::string& writtenBy() const { return writtenBy_; }
 
  private:
   BinaryReader section(const std::vector<unsigned char>& bytes) const {
     return BinaryReader(bytes.data(), bytes.size(), path_);
   }
-  std::string path_;
+  std::string path_, writtenBy_;
   std::vector<unsigned char> prelude_, state_, tail_;
 };
+
+// The note for a run resumed from a checkpoint written by the build `commit` (writtenBy()), or ""
+// when that is this build: the run continues correctly, but bit for bit as an uninterrupted run
+// only on the build that wrote it (arithmetic may change between builds).
+std::string resumedBuildNote(const std::string& commit);
 
 // Every per-element array of `b` (not types, masses, inertia: those come from the scene).
 void writeBodiesTo(BinaryWriter& out, const Bodies& b);

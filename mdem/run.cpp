@@ -390,6 +390,8 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     if (resumingHere) {
       resumed->restore(sim);
       r.resumedFromStep = sim.stepCount();
+      r.resumedFromCommit = resumed->writtenBy();
+      if (options.resumedFrom) options.resumedFrom(r.resumedFromCommit);
       if (options.resumedAt) options.resumedAt(std::min(1.0, static_cast<double>(sim.stepCount()) / totalSteps));
       run->open(&tail);
     } else {

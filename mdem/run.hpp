@@ -36,6 +36,9 @@ struct RunOptions {
   // (the `progress` callback's measure), so that a progress display counts them as done but
   // not as timed: its ETA then extrapolates the steps run since the resume.
   std::function<void(double)> resumedAt;
+  // Called once when a run resumes, with the commit of the build that wrote the checkpoint
+  // (CheckpointFile::writtenBy: "" for format 2), so that a different build can be told.
+  std::function<void(const std::string&)> resumedFrom;
   // Called before each `progress` report with one line on where the run is (the stage, its
   // time, and the last tensile or compression sample), for the progress display's note.
   std::function<void(const std::string&)> status;
@@ -85,6 +88,8 @@ struct RunSummary {
   bool interrupted = false;      // RunOptions::interruptAfter reached, or stopped on request
   bool stoppedOnRequest = false; // RunOptions::stopRequested: the checkpoint was written
   long resumedFromStep = -1;     // >= 0: resumed from a checkpoint at this step
+  // Resumed: the commit of the build that wrote the checkpoint ("" for a format-2 checkpoint).
+  std::string resumedFromCommit;
   long checkpoints = 0;          // written by this invocation
   std::vector<std::string> removedStale;  // outputs of an earlier run removed before starting
   EnergyLedger finalEnergies;

@@ -6,12 +6,15 @@
 // into a folder with an interrupted run is refused. Stages, profiles and compression cycles:
 // test_restart_stages.cpp.
 #include <atomic>
+#include <cstring>
 #include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "common/build_info.hpp"
 #include "common/errors.hpp"
+#include "mdem/checkpoint.hpp"
 #include "restart_fixture.hpp"
 
 namespace mesochain::mdem {
@@ -193,6 +196,42 @@ TEST_F(Restart, BadCheckpointsAreClearErrors) {
   text.replace(text.find("seed = 3"), 8, "seed = 4");
   std::ofstream(scenePath_) << text;
   expectError(good, "another scene");
+}
+
+TEST_F(Restart, CheckpointRecordsTheBuildThatWroteIt) {
+  RunOptions kill;
+  kill.interruptAfter = kEvery + 5;
+  run("out", kill);
+  const fs::path ck = dir_ / "out" / "checkpoint.mdem";
+  ASSERT_TRUE(fs::exists(ck));
+  const Scene scene = loadScene(scenePath_);
+  EXPECT_EQ(CheckpointFile(ck.string(), scene).writtenBy(), buildCommit());
+  EXPECT_EQ(resumedBuildNote(buildCommit()), "");
+  // The same checkpoint as another build wrote it: the commit replaced (same length), the
+  // checksum made again. It still resumes, reports that build, and the note names both.
+  std::string bytes = slurp(ck);
+  const std::string commit = buildCommit();
+  const std::size_t at = bytes.find(commit);
+  ASSERT_NE(at, std::string::npos);
+  const std::string other(commit.size(), 'f');
+  bytes.replace(at, commit.size(), other);
+  const std::uint64_t sum = fnv1a(bytes.data(), bytes.size() - 8);
+  std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
+  std::ofstream(ck, std::ios::binary | std::ios::trunc) << bytes;
+  std::string reported;
+  RunOptions resume;
+  resume.resume = true;
+  resume.resumedFrom = [&](const std::string& c) { reported = c; };
+  const RunSummary r = run("out", resume);
+  EXPECT_EQ(reported, other);
+  EXPECT_EQ(r.resumedFromCommit, other);
+  const std::string note = resumedBuildNote(other);
+  EXPECT_NE(note.find(other), std::string::npos) << note;
+  EXPECT_NE(note.find(commit), std::string::npos) << note;
+  EXPECT_NE(note.find("bit for bit only on the build that wrote"), std::string::npos) << note;
+  // And it continued the same run: the outputs are those of an uninterrupted run.
+  run("whole");
+  expectSameOutputs("out", "whole");
 }
 
 TEST_F(Restart, FreshRunIntoAnInterruptedRunsFolderIsRefused) {
