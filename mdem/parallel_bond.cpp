@@ -147,17 +147,11 @@ template <int N>
     const double sign = rel[0][k] < 0.0 ? -1.0 : 1.0;
     const double w = sign * rel[0][k];
     const double s2 = rel[1][k] * rel[1][k] + rel[2][k] * rel[2][k] + rel[3][k] * rel[3][k];
-    general[k] = !(s2 <= 1e-2 * w * w && bond[k]->theta.squaredNorm() < 8.0);
+    general[k] = !logSeriesHolds(w, s2, bond[k]->theta);
     anyGeneral = anyGeneral || general[k];
-    const double invW = 1.0 / w;
-    const double u = s2 * invW * invW;
-    const double u2 = u * u, u4 = u2 * u2;
-    const double tail = (1.0 / 3 - u * (1.0 / 5)) + u2 * (1.0 / 7 - u * (1.0 / 9)) +
-                        u4 * ((1.0 / 11 - u * (1.0 / 13)) + u2 * (1.0 / 15));
-    const double atanRatio = 1.0 - u * tail;
-    const double scale = 2.0 * sign * invW * atanRatio;
-    for (int c = 0; c < 3; ++c) theta[c][k] = scale * rel[1 + c][k];
-    beta[k] = 0.25 * tail / (atanRatio * atanRatio);
+    const LogSeries l = logSeries(sign, w, s2);  // inf or NaN in a general lane: replaced below
+    for (int c = 0; c < 3; ++c) theta[c][k] = l.scale * rel[1 + c][k];
+    beta[k] = l.beta;
   }
   if (anyGeneral)
     for (int k = 0; k < N; ++k)

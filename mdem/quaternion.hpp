@@ -133,21 +133,33 @@ RotationVector trackedLogWithJacobianGeneral(const Quat& q, const Vec3& previous
 // wait for theta: the chain is short. The principal branch is the tracked one when
 // |previous| + phi < pi, ensured by |previous|^2 < 8 (|previous| < 2.83). Otherwise the
 // general case.
+// The series branch from sign (of q.w), w = sign q.w and s2 = |q.vec|^2: theta = scale q.vec
+// and beta (also the bond kernel's per lane, parallel_bond.cpp).
+struct LogSeries {
+  double scale, beta;
+};
+[[gnu::always_inline]] inline LogSeries logSeries(double sign, double w, double s2) {
+  const double invW = 1.0 / w;
+  const double u = s2 * invW * invW;
+  const double u2 = u * u, u4 = u2 * u2;
+  const double tail = (1.0 / 3 - u * (1.0 / 5)) + u2 * (1.0 / 7 - u * (1.0 / 9)) +
+                      u4 * ((1.0 / 11 - u * (1.0 / 13)) + u2 * (1.0 / 15));  // Q(u)
+  const double atanRatio = 1.0 - u * tail;                                    // P(u)
+  return {2.0 * sign * invW * atanRatio, 0.25 * tail / (atanRatio * atanRatio)};
+}
+// Whether the series branch holds (see above).
+[[gnu::always_inline]] inline bool logSeriesHolds(double w, double s2, const Vec3& previous) {
+  return s2 <= 1e-2 * w * w && previous.squaredNorm() < 8.0;
+}
 inline RotationVector trackedLogWithJacobian(const Quat& q, const Vec3& previous) {
   const double sign = q.w < 0.0 ? -1.0 : 1.0;
   const double w = sign * q.w;
   const double s2 = q.x * q.x + q.y * q.y + q.z * q.z;
-  if (s2 <= 1e-2 * w * w && previous.squaredNorm() < 8.0) {
-    const double invW = 1.0 / w;
-    const double u = s2 * invW * invW;
-    const double u2 = u * u, u4 = u2 * u2;
-    const double tail = (1.0 / 3 - u * (1.0 / 5)) + u2 * (1.0 / 7 - u * (1.0 / 9)) +
-                        u4 * ((1.0 / 11 - u * (1.0 / 13)) + u2 * (1.0 / 15));  // Q(u)
-    const double atanRatio = 1.0 - u * tail;                                    // P(u)
-    const double scale = 2.0 * sign * invW * atanRatio;
+  if (logSeriesHolds(w, s2, previous)) {
+    const LogSeries l = logSeries(sign, w, s2);
     RotationVector r;
-    r.theta = {scale * q.x, scale * q.y, scale * q.z};
-    r.beta = 0.25 * tail / (atanRatio * atanRatio);
+    r.theta = {l.scale * q.x, l.scale * q.y, l.scale * q.z};
+    r.beta = l.beta;
     return r;
   }
   return trackedLogWithJacobianGeneral(q, previous);
