@@ -174,9 +174,17 @@ void setTranslation(ObjectiveCell& cell, double t) {
   cell.symmetry = cell.symmetry.withTranslation(t);
 }
 
+}  // namespace
+
 // Advances the T search by the dF/dT g1 found at t1: bracket by stepping downhill (secant, at
 // most 5 % per step), then regula falsi with the Illinois halving; sets the next t1.
-void advanceSearch(TranslationSearch& ts, double g1) {
+// g is dF/dT of the atoms relaxed at T only to the force tolerance, so two visits of one T may
+// disagree (by ~0.02 Hartree/Bohr for 180 atoms at 1e-4): a bracket end measured once with the
+// opposite sign can hold a sign change that is not there. Regula falsi then closes the bracket
+// onto that end and evaluates the same T again and again. A bracket that has shrunk to
+// 1e-10 of T without axial convergence is therefore dropped, and the search brackets afresh from
+// the current point with a step of 0.1 % of T downhill.
+void advanceTranslationSearch(TranslationSearch& ts, double g1) {
   const double t1 = ts.t1;
   if (!ts.bracketed && ts.g0 * g1 < 0) {
     ts.bracketed = true;
@@ -193,7 +201,10 @@ void advanceSearch(TranslationSearch& ts, double g1) {
     }
   }
   double next;
-  if (ts.bracketed) {
+  if (ts.bracketed && std::abs(ts.tb - ts.ta) <= 1e-10 * std::abs(t1)) {
+    ts.bracketed = false, ts.side = 0;
+    next = t1 * (1.0 - 1e-3 * (g1 > 0 ? 1 : -1));
+  } else if (ts.bracketed) {
     next = (ts.ta * ts.gb - ts.tb * ts.ga) / (ts.gb - ts.ga);
   } else {
     const double slope = (g1 - ts.g0) / (t1 - ts.t0);
@@ -203,8 +214,6 @@ void advanceSearch(TranslationSearch& ts, double g1) {
   ts.t0 = t1, ts.g0 = g1, ts.t1 = next;
   ++ts.iteration;
 }
-
-}  // namespace
 
 RelaxOutcome relax(const dftb::Calculator& calc, ObjectiveCell cell, const RelaxSettings& s) {
   RelaxOutcome out;
@@ -260,7 +269,7 @@ RelaxOutcome relax(const dftb::Calculator& calc, ObjectiveCell cell, const Relax
   // taken inside relaxAt resumes here).
   while (ts.iteration < s.maxTranslationSteps) {
     atomsOk = relaxAt(ts.t1);
-    advanceSearch(ts, out.result.dFdTranslation);
+    advanceTranslationSearch(ts, out.result.dFdTranslation);
     if (atomsOk && axialConverged()) {
       out.converged = true;
       break;

@@ -32,6 +32,10 @@ struct TranslationSearch {
   int side = 0;               // which end regula falsi moved last (Illinois halving)
 };
 
+// One step of the T search (relax.cpp): takes dF/dT at ts.t1, sets the next ts.t1. Exposed for
+// its tests.
+void advanceTranslationSearch(TranslationSearch& ts, double dFdT);
+
 // Where a relaxation stands after an accepted step: enough to continue it after an
 // interruption (RelaxSettings::snapshot, resumeFrom). The fixed-T relaxation under way restarts
 // from `cell` with a fresh L-BFGS memory (or FIRE velocity) and its own max_steps again, so a

@@ -148,3 +148,29 @@ TEST(Relax, RefusesASnapshotOfAnotherCell) {
   rs.resumeFrom = std::make_shared<const RelaxProgress>(p);
   EXPECT_THROW(relax(calc, buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr), rs), InputError);
 }
+
+// The T search on a model g(T) = dF/dT, started as relax() starts it, except that one visit with
+// g < 0 reports a positive value instead (as a fixed-T relaxation from another start can, to its
+// force tolerance): the search must still reach |g| below the tolerance, not close its bracket
+// onto that stale end and re-evaluate the same T (the stall of the six-wall sector n0 = 25,
+// bench/tube-sectors-2026-12-02/README.md).
+TEST(Relax, TranslationSearchEscapesABracketEndOfTheWrongSign) {
+  const double root = 4.6781, tolerance = 1e-8;
+  const auto model = [&](double t) { return 0.3 * std::sinh(20.0 * (t - root)) + 0.5 * (t - root); };
+  for (const int lieAt : {-1, 1, 2, 3, 4}) {  // -1: every visit honest
+    TranslationSearch ts;
+    ts.t0 = 4.50, ts.g0 = model(ts.t0);
+    ts.t1 = ts.t0 * (1.0 - 0.01 * (ts.g0 > 0 ? 1 : -1));
+    ts.iteration = 0;
+    int visits = 0, lies = 0;
+    for (; visits < 60; ++visits) {
+      double g = model(ts.t1);
+      if (std::abs(g) < tolerance) break;
+      if (visits >= lieAt && lieAt >= 0 && lies == 0 && g < 0) g = 0.02, ++lies;  // the stale value
+      advanceTranslationSearch(ts, g);
+    }
+    EXPECT_EQ(lies, lieAt >= 0 ? 1 : 0);
+    EXPECT_LT(visits, 60) << "lie at " << lieAt << ": stalled at T = " << ts.t1;
+    EXPECT_NEAR(ts.t1, root, 1e-6) << "lie at " << lieAt;
+  }
+}
