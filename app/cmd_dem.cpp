@@ -149,8 +149,7 @@ Command makeDemCommand() {
       std::cout << fmt::format("resumed from the checkpoint at step {}{}\n", r.resumedFromStep,
                                mdem::resumedBuildNote(r.resumedFromCommit).empty()
                                    ? ""
-                                   : " (written by another build: " +
-                                         (r.resumedFromCommit.empty() ? std::string("unknown") : r.resumedFromCommit) + ")");
+                                   : " (written by " + mdem::writingBuild(r.resumedFromCommit) + ")");
     const mdem::EnergyLedger& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",

@@ -46,17 +46,13 @@ class BondEffect : public Effect {
     Bond& b = bonds_[k];
     const BondForces r = bondForces(b, s.position[b.a], s.orientation[b.a], s.position[b.b],
                                     s.orientation[b.b]);
-    b.theta = r.theta;  // follow the branch of the relative rotation
-    results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
+    store(k, r);
   }
   // Bonds k and l (k != l) together: the same results as computeBond of each (bondForcesPair).
   void computeBondPair(const Bodies& s, int k, int l) {
-    Bond &b = bonds_[k], &c = bonds_[l];
     BondForces r, q;
-    bondForcesPair(b, c, s, r, q);
-    b.theta = r.theta, c.theta = q.theta;
-    results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
-    results_[l] = {q.forceA, q.torqueA, q.forceB, q.torqueB};
+    bondForcesPair(bonds_[k], bonds_[l], s, r, q);
+    store(k, r), store(l, q);
   }
   // Adds the buffered forces and torques of element i's bonds (in a fixed order).
   void gatherElement(int i, Vec3& force, Vec3& torque) const {
@@ -76,6 +72,11 @@ class BondEffect : public Effect {
   void addElementEnergies(const State& state, std::vector<double>& perElement) const override;
 
  private:
+  // Bond k's result into the buffer; its tracked twist branch follows the relative rotation.
+  void store(int k, const BondForces& r) {
+    bonds_[k].theta = r.theta;
+    results_[k] = {r.forceA, r.torqueA, r.forceB, r.torqueB};
+  }
   struct Wrench {
     Vec3 forceA, torqueA, forceB, torqueB;
   };

@@ -158,13 +158,16 @@ CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : pa
   tail_ = in.readVector<unsigned char>("run section");
 }
 
+std::string writingBuild(const std::string& commit) {
+  return commit.empty() ? std::string("an earlier build (checkpoint format 2, no commit recorded)")
+                        : "mesochain commit " + commit;
+}
+
 std::string resumedBuildNote(const std::string& commit) {
   if (commit == buildCommit()) return "";
   return fmt::format("note: the checkpoint was written by {}, this is mesochain commit {}: the run continues from "
                      "it, but it repeats an uninterrupted run bit for bit only on the build that wrote the checkpoint",
-                     commit.empty() ? std::string("an earlier build (checkpoint format 2, no commit recorded)")
-                                    : "mesochain commit " + commit,
-                     buildCommit());
+                     writingBuild(commit), buildCommit());
 }
 
 void CheckpointFile::restore(Simulation& sim) const {

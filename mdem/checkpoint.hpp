@@ -65,6 +65,8 @@ class CheckpointFile {
 // when that is this build: the run continues correctly, but bit for bit as an uninterrupted run
 // only on the build that wrote it (arithmetic may change between builds).
 std::string resumedBuildNote(const std::string& commit);
+// "mesochain commit X", or what a format-2 checkpoint's empty commit means.
+std::string writingBuild(const std::string& commit);
 
 // Every per-element array of `b` (not types, masses, inertia: those come from the scene).
 void writeBodiesTo(BinaryWriter& out, const Bodies& b);

@@ -211,11 +211,12 @@ ThreadPartition partitionElements(int n, const std::vector<Bond>& bonds, const E
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (int k = 0; k < items; ++k) order[fill[owner[e->itemElement(k)]]++] = k;
     // Each part's items by their lowest element, the order in which its block sweep computes them.
+    std::vector<int> element(items), lowest(items);
+    for (int k = 0; k < items; ++k) element[k] = e->itemElement(k);
     for (int t = 0; t < p.threads; ++t)
       std::stable_sort(order.begin() + start[t], order.begin() + start[t + 1],
-                       [e](int x, int y) { return e->itemElement(x) < e->itemElement(y); });
-    std::vector<int> lowest(items);
-    for (int m = 0; m < items; ++m) lowest[m] = e->itemElement(order[m]);
+                       [&element](int x, int y) { return element[x] < element[y]; });
+    for (int m = 0; m < items; ++m) lowest[m] = element[order[m]];
     p.itemLowest.push_back(std::move(lowest));
     p.itemStart.push_back(std::move(start));
     p.itemOrder.push_back(std::move(order));
