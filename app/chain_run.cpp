@@ -21,6 +21,7 @@
 #include "common/atomic_file.hpp"
 #include "common/errors.hpp"
 #include "common/finite_output.hpp"
+#include "common/progress_bar.hpp"
 #include "common/units.hpp"
 #include "mdem/cantilever_check.hpp"
 #include "mdem/scene_file.hpp"
@@ -102,8 +103,13 @@ bool referenceStage(ChainRun& r) {
     if (r.budget == 0) return false;
     const auto t0 = std::chrono::steady_clock::now();
     objective::ScanSettings s = in.settings;
-    s.progressBar = false;
+    s.progressBar = false;  // its plan's other points are not computed here: a bar of its own
+    ProgressBar bar("chain reference", 1);
+    s.relax.progress = [&bar](int evaluation, double f, double maxForce) {
+      bar.update(0, fmt::format("evaluation {}  F = {:.10f} Ha  max|force| = {:.2e} Ha/Bohr", evaluation, f, maxForce));
+    };
     ref = objective::relaxScanReference(in.cell.cell, objective::loadParameters(in.cell), calc, s);
+    bar.finish();
     objective::writeScanReference(refPath.string(), ref);
     rec = {{"seconds", secondsSince(t0)}};
     r.saveState();
@@ -149,7 +155,6 @@ bool scanStage(ChainRun& r, const ScanStage& stage, const toml::value& keys, con
     objective::ScanInput in = objective::readScanFile(scanFile.string(), r.c.dir.string());
     in.settings.resume = true;
     in.settings.stopAfter = r.budget;
-    in.settings.progressBar = false;
     const auto t0 = std::chrono::steady_clock::now();
     const objective::ScanResult res = objective::runScan(in.cell.cell, objective::loadParameters(in.cell),
                                                          objective::calculatorSettings(in.cell), in.settings);
@@ -310,7 +315,6 @@ void knobsStage(ChainRun& r) {
     q.dispersion = k.dispersion;
     q.temperature = k.temperature;
     q.where = {r.c.file.string(), "knobs."};
-    q.progressBar = false;
     json settings = {q.kpoints, q.angular, q.sampling, q.dispersion, q.temperature};
     const std::string hash = chainHash(settings.dump() + readText(r.c.dir / (stage + ".json")));
     const fs::path out = dir / (stage + ".json");

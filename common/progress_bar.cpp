@@ -40,7 +40,8 @@ ProgressBar::ProgressBar(std::string label, int total, int lineEvery, ProgressMo
       lineEvery_(std::max(lineEvery, 1)),
       mode_(mode),
       out_(&out),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()),
+      lastLine_(start_) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 
@@ -77,13 +78,16 @@ void ProgressBar::skip(int count) { skipped_ += std::max(count, 0); }
 void ProgressBar::stage(const std::string& name) {
   if (finished_ || name == stage_) return;
   stage_ = name;
-  if (mode_ == ProgressMode::Lines) *out_ << label_ << ": " << name << "\n" << std::flush;
+  if (mode_ == ProgressMode::Lines) {
+    *out_ << label_ << ": " << name << "\n" << std::flush;
+    lastLine_ = std::chrono::steady_clock::now();
+  }
 }
 
 void ProgressBar::update(int done, const std::string& note) {
   if (mode_ == ProgressMode::Silent || finished_) return;
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const auto now = std::chrono::steady_clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
   const int timed = done - skipped_;
   const double eta = timed > 0 ? elapsed / timed * (total_ - done) : -1.0;
   const std::string shown = note.empty() ? stage_ : note;
@@ -92,11 +96,17 @@ void ProgressBar::update(int done, const std::string& note) {
     drawn_ = true;
     return;
   }
-  // Lines: a further multiple of lineEvery (or the end) reached; with -v also every new note.
+  // Lines: a further multiple of lineEvery (or the end) reached; with -v also every new note;
+  // and a new note once no line was written for the heartbeat (a long step shows it is alive).
   const bool step = done > lastLineDone_ && done > skipped_ &&
                     (done / lineEvery_ > std::max(lastLineDone_, 0) / lineEvery_ || done == total_);
-  const bool newNote = verbosity() == Verbosity::Verbose && !note.empty() && note != lastNote_;
-  if (step || newNote) *out_ << renderLine(label_, done, total_, elapsed, eta, note) << "\n" << std::flush;
+  const bool newNote = !note.empty() && note != lastNote_;
+  const bool verboseNote = newNote && verbosity() == Verbosity::Verbose;
+  const bool heartbeat = newNote && std::chrono::duration<double>(now - lastLine_).count() >= heartbeatSeconds_;
+  if (step || verboseNote || heartbeat) {
+    *out_ << renderLine(label_, done, total_, elapsed, eta, note) << "\n" << std::flush;
+    lastLine_ = now;
+  }
   if (step) lastLineDone_ = done;
   lastNote_ = note;
 }

@@ -5,6 +5,10 @@
 //  - not on a terminal (a log file, a pipe, or CI=true): a plain line per finished step (per
 //    scan point; per tenth of an mDEM run) and per stage, never a '\r':
 //      scan stretch: 3/7  elapsed 0:42  ETA 0:56
+//    A step that takes long (a scan point relaxed for an hour, a tenth of a 40-hour mDEM run)
+//    gets a line with its current note every `heartbeat` seconds (default 300), so that a log
+//    of a background run shows it alive and where it is:
+//      scan stretch: 0/7  elapsed 1:05:12  ETA --:--  point 1/7: evaluation 95 max|force| 4.2e-04
 //  - `mesochain -q`: nothing; `mesochain -v`: plain lines on a terminal too, and every note
 //    (e.g. each relaxation step of a scan point).
 // The caller prints its own summary.
@@ -43,6 +47,9 @@ class ProgressBar {
   void stage(const std::string& name);
   // Marks `count` steps as done without timing them (resumed work).
   void skip(int count);
+  // Lines mode: the longest time without a line while notes arrive (seconds; 0 = a line per note).
+  void setHeartbeat(double seconds) { heartbeatSeconds_ = seconds; }
+  static constexpr double kDefaultHeartbeatSeconds = 300.0;
   // Ends the line (once); called by the destructor too.
   void finish();
 
@@ -68,7 +75,8 @@ class ProgressBar {
   std::ostream* out_;
   bool finished_ = false;
   bool drawn_ = false;
-  std::chrono::steady_clock::time_point start_;
+  double heartbeatSeconds_ = kDefaultHeartbeatSeconds;
+  std::chrono::steady_clock::time_point start_, lastLine_;
 };
 
 // True when the bar is drawn (ProgressMode::Bar).

@@ -59,6 +59,10 @@ TEST(CliChain, StagesResumeSkipAndMatchTheHandRunBeam) {
   EXPECT_EQ(status(first, "stretch"), "resumed");
   EXPECT_EQ(status(first, "twist"), "ran");
   EXPECT_EQ(status(first, "bend_soft"), "ran");
+  // Off a terminal each scan point finished is a plain progress line (common/progress_bar.hpp;
+  // point 1 is the shared reference, restored).
+  EXPECT_NE(out.find("scan twist: 5/5  elapsed"), std::string::npos) << out;
+  EXPECT_EQ(out.find('\r'), std::string::npos);
   for (const json& s : first["stages"])
     if (s["stage"] == "stretch") {
       EXPECT_EQ(s["points_restored"].get<int>(), 3);

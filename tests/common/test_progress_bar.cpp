@@ -56,6 +56,32 @@ TEST(ProgressLines, EveryTenthAndStagesAndResumedSteps) {
   EXPECT_EQ(lines(resumed.str()), 2) << resumed.str();
 }
 
+// A long step (a scan point relaxed for an hour) shows its note once no line was written for
+// the heartbeat: with a heartbeat of 0 every new note is a line, a repeated note is not; with the
+// default (5 minutes) a quick step's notes stay silent, as in the first test.
+TEST(ProgressLines, HeartbeatShowsTheNoteOfALongStep) {
+  std::ostringstream out;
+  ProgressBar bar("scan stretch", 2, 1, ProgressMode::Lines, out);
+  bar.setHeartbeat(0.0);
+  bar.update(0, "point 1/2: evaluation 1 max|force| 3.0e-02");
+  bar.update(0, "point 1/2: evaluation 1 max|force| 3.0e-02");  // the same note: no line
+  bar.update(0, "point 1/2: evaluation 2 max|force| 9.0e-03");
+  EXPECT_EQ(lines(out.str()), 2) << out.str();
+  EXPECT_NE(out.str().find("scan stretch: 0/2  elapsed 0:00  ETA --:--  point 1/2: evaluation 2 max|force| 9.0e-03\n"),
+            std::string::npos)
+      << out.str();
+  std::ostringstream quick;
+  ProgressBar q("scan stretch", 2, 1, ProgressMode::Lines, quick);
+  EXPECT_EQ(ProgressBar::kDefaultHeartbeatSeconds, 300.0);
+  for (int k = 1; k <= 50; ++k) q.update(0, "point 1/2: evaluation " + std::to_string(k));
+  EXPECT_EQ(quick.str(), "");
+  std::ostringstream silent;
+  ProgressBar s("scan stretch", 2, 1, ProgressMode::Silent, silent);
+  s.setHeartbeat(0.0);
+  s.update(0, "point 1/2: evaluation 1");
+  EXPECT_EQ(silent.str(), "");
+}
+
 TEST(ProgressLines, BarRedrawsAndSilentWritesNothing) {
   std::ostringstream bar, silent;
   {
