@@ -174,6 +174,27 @@ void setTranslation(ObjectiveCell& cell, double t) {
   cell.symmetry = cell.symmetry.withTranslation(t);
 }
 
+// The first step of the T search from the atoms relaxed at T0 with dF/dT = g0: Newton on the
+// clamped-ion axial stiffness k = d(dF/dT)/dT of the atoms scaled affinely with T, measured by
+// one evaluation at T0 (1 -+ 1e-4), downhill. Relaxing the atoms can only soften the cell, so k is
+// an upper bound of the relaxed stiffness and the step does not overshoot the root; at most
+// 1 % of T (the step taken when k is not positive). A start close to T0 (a relaxed structure
+// read back, T off by 1e-4) so takes a step of its own size instead of 1 % and back, which
+// cost as much as the whole relaxation (docs/cell-file.md, [task]).
+double firstTranslationStep(const dftb::Calculator& calc, const ObjectiveCell& cell, double g0,
+                            int& evaluations) {
+  const double t0 = cell.symmetry.translation(), maxStep = 0.01 * t0;
+  const double downhill = g0 > 0 ? -1.0 : 1.0;
+  ObjectiveCell probe = cell;
+  const double dt = 1e-4 * t0 * downhill;
+  setTranslation(probe, t0 + dt);
+  const dftb::Result r = evaluateChecked(calc, probe, evaluations);
+  ++evaluations;
+  const double k = (r.dFdTranslation - g0) / dt;
+  if (!std::isfinite(k) || !(k > 0)) return downhill * maxStep;
+  return std::clamp(-g0 / k, -maxStep, maxStep);
+}
+
 }  // namespace
 
 // Advances the T search by the dF/dT g1 found at t1: bracket by stepping downhill (secant, at
@@ -260,9 +281,9 @@ RelaxOutcome relax(const dftb::Calculator& calc, ObjectiveCell cell, const Relax
       out.cell = cell;
       return out;
     }
-    // The first step of the search: 1 % of T downhill of dF/dT.
+    // The first step of the search: Newton on the clamped-ion stiffness, at most 1 % of T.
     ts.t0 = cell.symmetry.translation(), ts.g0 = out.result.dFdTranslation;
-    ts.t1 = ts.t0 * (1.0 - 0.01 * (ts.g0 > 0 ? 1 : -1));
+    ts.t1 = ts.t0 + firstTranslationStep(calc, cell, ts.g0, out.evaluations);
     ts.iteration = 0;
   }
   // Root of g(T) = dF/dT (the state between fixed-T relaxations is `ts`, so that a snapshot

@@ -55,6 +55,33 @@ TEST(Relax, AtomsAndTranslationOfAZigzagTube) {
   EXPECT_NEAR(r1 / r0, 1.0, 0.05);
 }
 
+// A relaxed structure read back with its T a little off (the T0 of a looser run, a rounded
+// file) is finished near T0: the search's first step is a Newton step on the clamped-ion
+// stiffness, which cannot overshoot, so no T farther from T0 than the start is visited (a
+// fixed first step of 1 % of T went 20 times farther and back).
+TEST(Relax, ARelaxedStructureWithItsTSlightlyOffStaysNearT0) {
+  const auto calc = calculator();
+  ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
+  RelaxSettings rs;
+  rs.forceTolerance = 1e-5;
+  rs.axialTolerance = 1e-5;
+  rs.relaxTranslation = true;
+  const RelaxOutcome first = relax(calc, cell, rs);
+  ASSERT_TRUE(first.converged);
+  const double t0 = first.cell.symmetry.translation(), offset = 5e-4 * t0;
+  for (double sign : {1.0, -1.0}) {
+    ObjectiveCell again = first.cell;
+    again.positions.row(2) *= (t0 + sign * offset) / t0;
+    again.symmetry = again.symmetry.withTranslation(t0 + sign * offset);
+    const RelaxOutcome out = relax(calc, again, rs);
+    ASSERT_TRUE(out.converged);
+    ASSERT_GE(out.history.size(), 2u);  // the start was not converged in T
+    for (const auto& h : out.history) EXPECT_LE(std::abs(h.translation - t0), offset * (1 + 1e-9)) << h.translation;
+    EXPECT_NEAR(out.cell.symmetry.translation(), t0, 0.2 * offset);
+    EXPECT_LT(out.evaluations, first.evaluations);
+  }
+}
+
 // A relaxation interrupted after an accepted step continues from its snapshot: the T search
 // keeps the fixed-T relaxations it had finished and its bracket, the atoms restart where they
 // were, and the result meets the same tolerances at the same T0 and energy as the uninterrupted
