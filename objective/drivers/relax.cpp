@@ -167,13 +167,6 @@ bool relaxAtomsAtFixedSymmetry(const dftb::Calculator& calc, ObjectiveCell& cell
   return relaxAtoms(calc, cell, s, result, evaluations, accepted);
 }
 
-// Changes T and scales the z coordinates with it (an affine warm start).
-void setTranslation(ObjectiveCell& cell, double t) {
-  const double scale = t / cell.symmetry.translation();
-  cell.positions.row(2) *= scale;
-  cell.symmetry = cell.symmetry.withTranslation(t);
-}
-
 // The first step of the T search from the atoms relaxed at T0 with dF/dT = g0: Newton on the
 // clamped-ion axial stiffness k = d(dF/dT)/dT of the atoms scaled affinely with T, measured by
 // one evaluation at T0 (1 -+ 1e-4), downhill. Relaxing the atoms can only soften the cell, so k is
@@ -196,6 +189,13 @@ double firstTranslationStep(const dftb::Calculator& calc, const ObjectiveCell& c
 }
 
 }  // namespace
+
+// Changes T and scales the z coordinates with it (an affine warm start).
+void setTranslation(ObjectiveCell& cell, double t) {
+  const double scale = t / cell.symmetry.translation();
+  cell.positions.row(2) *= scale;
+  cell.symmetry = cell.symmetry.withTranslation(t);
+}
 
 // Advances the T search by the dF/dT g1 found at t1: bracket by stepping downhill (secant, at
 // most 5 % per step), then regula falsi with the Illinois halving; sets the next t1.

@@ -32,6 +32,10 @@ struct TranslationSearch {
   int side = 0;               // which end regula falsi moved last (Illinois halving)
 };
 
+// The cell at translation t: its atoms' axial coordinates scaled with T (affinely), the twist and
+// the rotation order kept.
+void setTranslation(ObjectiveCell& cell, double t);
+
 // One step of the T search (relax.cpp): takes dF/dT at ts.t1, sets the next ts.t1. Exposed for
 // its tests.
 void advanceTranslationSearch(TranslationSearch& ts, double dFdT);

@@ -24,16 +24,22 @@ dftb::Calculator calculator() {
   s.band.electronicTemperature = 300 * units::kBoltzmannHartreePerKelvin;
   return dftb::Calculator(params, s);
 }
+
+// Atoms to 1e-5 Ha/Bohr and the T search to an axial force of 1e-5.
+RelaxSettings atomsAndTranslation() {
+  RelaxSettings rs;
+  rs.forceTolerance = 1e-5;
+  rs.axialTolerance = 1e-5;
+  rs.relaxTranslation = true;
+  return rs;
+}
 }  // namespace
 
 TEST(Relax, AtomsAndTranslationOfAZigzagTube) {
   const auto calc = calculator();
   ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
   cell.positions(0, 1) += 0.05;  // start away from the ideal roll-up
-  RelaxSettings rs;
-  rs.forceTolerance = 1e-5;
-  rs.axialTolerance = 1e-5;
-  rs.relaxTranslation = true;
+  const RelaxSettings rs = atomsAndTranslation();
   const RelaxOutcome out = relax(calc, cell, rs);
   ASSERT_TRUE(out.converged);
   EXPECT_LT(maxForce(out.result.gradient), 1e-5);
@@ -44,8 +50,7 @@ TEST(Relax, AtomsAndTranslationOfAZigzagTube) {
   fixedT.relaxTranslation = false;
   for (double t : {t0 - h, t0 + h}) {
     ObjectiveCell c = out.cell;
-    c.positions.row(2) *= t / t0;
-    c.symmetry = c.symmetry.withTranslation(t);
+    setTranslation(c, t);
     const RelaxOutcome o = relax(calc, c, fixedT);
     EXPECT_GT(o.result.freeEnergy, out.result.freeEnergy);
   }
@@ -61,18 +66,14 @@ TEST(Relax, AtomsAndTranslationOfAZigzagTube) {
 // fixed first step of 1 % of T went 20 times farther and back).
 TEST(Relax, ARelaxedStructureWithItsTSlightlyOffStaysNearT0) {
   const auto calc = calculator();
-  ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
-  RelaxSettings rs;
-  rs.forceTolerance = 1e-5;
-  rs.axialTolerance = 1e-5;
-  rs.relaxTranslation = true;
+  const ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
+  const RelaxSettings rs = atomsAndTranslation();
   const RelaxOutcome first = relax(calc, cell, rs);
   ASSERT_TRUE(first.converged);
   const double t0 = first.cell.symmetry.translation(), offset = 5e-4 * t0;
   for (double sign : {1.0, -1.0}) {
     ObjectiveCell again = first.cell;
-    again.positions.row(2) *= (t0 + sign * offset) / t0;
-    again.symmetry = again.symmetry.withTranslation(t0 + sign * offset);
+    setTranslation(again, t0 + sign * offset);
     const RelaxOutcome out = relax(calc, again, rs);
     ASSERT_TRUE(out.converged);
     ASSERT_GE(out.history.size(), 2u);  // the start was not converged in T

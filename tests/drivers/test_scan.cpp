@@ -109,8 +109,7 @@ TEST(Scan, StretchMatchesIndependentRelaxations) {
   for (const ScanPoint& p : r.points) {
     ObjectiveCell c = tube;
     const double t = t0 * (1 + p.deformation);
-    c.positions.row(2) *= t / c.symmetry.translation();
-    c.symmetry = c.symmetry.withTranslation(t);
+    setTranslation(c, t);
     const RelaxOutcome o = relax(calculator, c, rs);
     ASSERT_TRUE(o.converged);
     EXPECT_NEAR(o.result.freeEnergy, p.energy, 1e-9) << "strain " << p.deformation;
