@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Sliding rigidity of N-wall zigzag sectors (C9; N = 1: the 4-atom C_n0 sector) from a series
+over the inner index n0, beside the armchair result (../tube-sectors-2026-12-02/fit_walls.py).
+
+Reads results.txt (N n0 atoms E_cell e_atom ...) and the relaxed walls z{N}-{n0}-relaxed.xyz
+(atoms in wall order, inner first; wall k of (n0 + 9k, 0) holds 4 (n0 + 9k) / 9 atoms) and fits
+per N
+
+    e = e_inf + 1/2 D1_eff a_atom x,   x = sum_k n_k / R_k^2 / sum_k n_k
+
+(every wall bends as a monolayer of its own radius R_k, the mean distance of its atoms from the
+axis; n_k its atoms) with a_atom = 3 sqrt(3) b^2 / 4, b = T / 3 from the relaxed translation
+(zigzag: T = sqrt(3) a = 3 b). With free sliding D1_eff is the monolayer's D1.
+
+The zigzag step of 9 indices sets the walls 3.52 A apart before relaxation (the armchair step of 5:
+3.39 A), so the relaxed spacing d (3.45-3.50 A) lies above the equilibrium and changes along the
+series; for series of at least 4 radii the fit is repeated with the interlayer term of that
+offset, e = e_inf + 1/2 D1 a_atom x + B (d - d0)^2, d the mean spacing and d0 = 3.408 A (the
+armchair bilayer's relaxed spacing). Python 3, no packages.
+"""
+import math
+import sys
+
+HARTREE_EV = 27.211386245988
+
+
+def wall_counts(N, n0, natoms):
+    if N == 1:
+        return [natoms]
+    return [4 * (n0 + 9 * k) // 9 for k in range(N)]
+
+
+def read_xyz(path):
+    lines = open(path).read().split('\n')
+    n = int(lines[0])
+    T = float([t for t in lines[1].split() if t.startswith('mesochain:translation=')][0].split('=')[1])
+    return T, [list(map(float, l.split()[1:4])) for l in lines[2:2 + n]]
+
+
+def fit_line(x, y):
+    n = len(x)
+    mx, my = sum(x) / n, sum(y) / n
+    sxx = sum((a - mx) ** 2 for a in x)
+    s = sum((a - mx) * (b - my) for a, b in zip(x, y)) / sxx
+    c = my - s * mx
+    res = [b - (c + s * a) for a, b in zip(x, y)]
+    se = math.sqrt(sum(r * r for r in res) / (n - 2) / sxx) if n > 2 else float('nan')
+    return s, se, max(abs(r) for r in res)
+
+
+def solve3(X, y):
+    """Least squares of y ~ X (three columns) by the normal equations and Gauss elimination."""
+    A = [[sum(r[i] * r[j] for r in X) for j in range(3)] + [sum(r[i] * v for r, v in zip(X, y))]
+         for i in range(3)]
+    for i in range(3):
+        for j in range(i + 1, 3):
+            f = A[j][i] / A[i][i]
+            A[j] = [a - f * b for a, b in zip(A[j], A[i])]
+    sol = [0.0] * 3
+    for i in (2, 1, 0):
+        sol[i] = (A[i][3] - sum(A[i][k] * sol[k] for k in range(i + 1, 3))) / A[i][i]
+    return sol
+
+
+D0_SPACING = 3.408
+
+
+def main(path='results.txt'):
+    series = {}
+    for line in open(path):
+        p = line.split()
+        if len(p) < 5 or not p[0].isdigit():
+            continue
+        N, n0, e = int(p[0]), int(p[1]), float(p[4])
+        T, atoms = read_xyz(f'z{N}-{n0}-relaxed.xyz')
+        counts = wall_counts(N, n0, len(atoms))
+        assert sum(counts) == len(atoms), (N, n0, counts, len(atoms))
+        radii, i = [], 0
+        for c in counts:
+            radii.append(sum(math.hypot(a[0], a[1]) for a in atoms[i:i + c]) / c)
+            i += c
+        x = sum(c / r ** 2 for c, r in zip(counts, radii)) / sum(counts)
+        series.setdefault(N, []).append((n0, e, x, radii, T))
+    for N, rows in sorted(series.items()):
+        print(f'N = {N}: n0 = {[r[0] for r in rows]}, wall radii (A) = '
+              f'{[[round(v, 3) for v in r[3]] for r in rows]}, T (A) = {[round(r[4], 5) for r in rows]}')
+        if len(rows) < 2:
+            print('   one radius only: no fit')
+            continue
+        b = rows[0][4] / 3
+        a_atom = 3 * math.sqrt(3) / 4 * b * b
+        s, se, mr = fit_line([r[2] for r in rows], [r[1] for r in rows])
+        d1, err = 2 * s * HARTREE_EV / a_atom, 2 * se * HARTREE_EV / a_atom
+        spacing = [sum(r[3][k + 1] - r[3][k] for k in range(N - 1)) / (N - 1) for r in rows] if N > 1 else []
+        print(f'   D1_eff = {d1:.4f} +- {err:.4f} eV (max residual {mr * HARTREE_EV * 1e3:.4f} meV/atom);'
+              f' sliding N D1_eff = {N * d1:.3f} eV'
+              + (f'; wall spacing {min(spacing):.3f}-{max(spacing):.3f} A' if spacing else ''))
+        if N > 1 and len(rows) >= 4:
+            X = [[1.0, r[2], (d - D0_SPACING) ** 2] for r, d in zip(rows, spacing)]
+            sol = solve3(X, [r[1] for r in rows])
+            print(f'   with the spacing term: D1_eff = {2 * sol[1] * HARTREE_EV / a_atom:.4f} eV,'
+                  f' B = {sol[2] * HARTREE_EV:.4f} eV/A^2 per atom')
+
+
+if __name__ == '__main__':
+    main(*sys.argv[1:])
