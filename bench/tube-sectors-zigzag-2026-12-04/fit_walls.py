@@ -49,17 +49,22 @@ def fit_line(x, y):
 
 
 def solve3(X, y):
-    """Least squares of y ~ X (three columns) by the normal equations and Gauss elimination."""
+    """Least squares of y ~ X (three columns, more than three rows) by the normal equations:
+    the coefficients and their standard errors (sigma^2 (X^T X)^-1, sigma^2 = RSS / (n - 3))."""
+    n = len(X)
+    # Gauss-Jordan on [X^T X | X^T y | I]: the solution and the inverse together.
     A = [[sum(r[i] * r[j] for r in X) for j in range(3)] + [sum(r[i] * v for r, v in zip(X, y))]
-         for i in range(3)]
+         + [1.0 if k == i else 0.0 for k in range(3)] for i in range(3)]
     for i in range(3):
-        for j in range(i + 1, 3):
-            f = A[j][i] / A[i][i]
-            A[j] = [a - f * b for a, b in zip(A[j], A[i])]
-    sol = [0.0] * 3
-    for i in (2, 1, 0):
-        sol[i] = (A[i][3] - sum(A[i][k] * sol[k] for k in range(i + 1, 3))) / A[i][i]
-    return sol
+        A[i] = [a / A[i][i] for a in A[i]]
+        for j in range(3):
+            if j != i:
+                f = A[j][i]
+                A[j] = [a - f * b for a, b in zip(A[j], A[i])]
+    sol = [A[i][3] for i in range(3)]
+    rss = sum((v - sum(c * x for c, x in zip(sol, r))) ** 2 for r, v in zip(X, y))
+    err = [math.sqrt(rss / (n - 3) * A[i][4 + i]) for i in range(3)]
+    return sol, err
 
 
 D0_SPACING = 3.408
@@ -97,9 +102,10 @@ def main(path='results.txt'):
               + (f'; wall spacing {min(spacing):.3f}-{max(spacing):.3f} A' if spacing else ''))
         if N > 1 and len(rows) >= 4:
             X = [[1.0, r[2], (d - D0_SPACING) ** 2] for r, d in zip(rows, spacing)]
-            sol = solve3(X, [r[1] for r in rows])
-            print(f'   with the spacing term: D1_eff = {2 * sol[1] * HARTREE_EV / a_atom:.4f} eV,'
-                  f' B = {sol[2] * HARTREE_EV:.4f} eV/A^2 per atom')
+            sol, err = solve3(X, [r[1] for r in rows])
+            print(f'   with the spacing term: D1_eff = {2 * sol[1] * HARTREE_EV / a_atom:.4f}'
+                  f' +- {2 * err[1] * HARTREE_EV / a_atom:.4f} eV,'
+                  f' B = {sol[2] * HARTREE_EV:.4f} +- {err[2] * HARTREE_EV:.4f} eV/A^2 per atom')
 
 
 if __name__ == '__main__':
