@@ -18,34 +18,26 @@ series; for series of at least 4 radii the fit is repeated with the interlayer t
 offset, e = e_inf + 1/2 D1 a_atom x + B (d - d0)^2, d the mean spacing and d0 = 3.408 A (the
 armchair bilayer's relaxed spacing). Python 3, no packages.
 """
+import importlib.util
 import math
+import os
 import sys
 
 HARTREE_EV = 27.211386245988
+
+# read_xyz and fit_line are the armchair series' (one script, two families).
+_here = os.path.dirname(os.path.abspath(__file__))
+_spec = importlib.util.spec_from_file_location(
+    'armchair_fit_walls', os.path.join(_here, '..', 'tube-sectors-2026-12-02', 'fit_walls.py'))
+_armchair = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_armchair)
+read_xyz, fit_line = _armchair.read_xyz, _armchair.fit_line
 
 
 def wall_counts(N, n0, natoms):
     if N == 1:
         return [natoms]
     return [4 * (n0 + 9 * k) // 9 for k in range(N)]
-
-
-def read_xyz(path):
-    lines = open(path).read().split('\n')
-    n = int(lines[0])
-    T = float([t for t in lines[1].split() if t.startswith('mesochain:translation=')][0].split('=')[1])
-    return T, [list(map(float, l.split()[1:4])) for l in lines[2:2 + n]]
-
-
-def fit_line(x, y):
-    n = len(x)
-    mx, my = sum(x) / n, sum(y) / n
-    sxx = sum((a - mx) ** 2 for a in x)
-    s = sum((a - mx) * (b - my) for a, b in zip(x, y)) / sxx
-    c = my - s * mx
-    res = [b - (c + s * a) for a, b in zip(x, y)]
-    se = math.sqrt(sum(r * r for r in res) / (n - 2) / sxx) if n > 2 else float('nan')
-    return s, se, max(abs(r) for r in res)
 
 
 def solve3(X, y):
@@ -77,7 +69,7 @@ def main(path='results.txt'):
         if len(p) < 5 or not p[0].isdigit():
             continue
         N, n0, e = int(p[0]), int(p[1]), float(p[4])
-        T, atoms = read_xyz(f'z{N}-{n0}-relaxed.xyz')
+        T, atoms = read_xyz(os.path.join(_here, f'z{N}-{n0}-relaxed.xyz'))
         counts = wall_counts(N, n0, len(atoms))
         assert sum(counts) == len(atoms), (N, n0, counts, len(atoms))
         radii, i = [], 0
@@ -94,7 +86,7 @@ def main(path='results.txt'):
             continue
         b = rows[0][4] / 3
         a_atom = 3 * math.sqrt(3) / 4 * b * b
-        s, se, mr = fit_line([r[2] for r in rows], [r[1] for r in rows])
+        s, _, se, mr = fit_line([r[2] for r in rows], [r[1] for r in rows])
         d1, err = 2 * s * HARTREE_EV / a_atom, 2 * se * HARTREE_EV / a_atom
         spacing = [sum(r[3][k + 1] - r[3][k] for k in range(N - 1)) / (N - 1) for r in rows] if N > 1 else []
         print(f'   D1_eff = {d1:.4f} +- {err:.4f} eV (max residual {mr * HARTREE_EV * 1e3:.4f} meV/atom);'

@@ -96,8 +96,7 @@ TEST(Relax, ResumesFromASnapshotToTheSameT0AndEnergy) {
   const auto calc = calculator();
   ObjectiveCell cell = buildNanotubeHelical(8, 0, 1.42 * units::kAngstromInBohr);
   cell.positions(0, 1) += 0.05;
-  cell.positions.row(2) *= 1.01;  // T 1 % off T0: the search takes several fixed-T relaxations
-  cell.symmetry = cell.symmetry.withTranslation(cell.symmetry.translation() * 1.01);
+  setTranslation(cell, cell.symmetry.translation() * 1.01);  // T 1 % off T0: the search takes several fixed-T relaxations
   for (const RelaxAlgorithm algorithm : {RelaxAlgorithm::Lbfgs, RelaxAlgorithm::Fire}) {
     RelaxSettings rs;
     rs.algorithm = algorithm;

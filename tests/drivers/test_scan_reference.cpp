@@ -14,6 +14,7 @@
 #include "carbon_fixture.hpp"
 #include "common/errors.hpp"
 #include "objective/core/nanotube_builder.hpp"
+#include "objective/drivers/relax.hpp"
 #include "objective/drivers/scan.hpp"
 #include "objective/drivers/scan_reference.hpp"
 
@@ -36,9 +37,7 @@ ScanSettings stretch() {
 // The (5,5) tube 1 % longer than its T0, so that the T0 search has work to do.
 ObjectiveCell stretchedTube() {
   ObjectiveCell tube = buildNanotubeHelical(5, 5, kBond);
-  tube.positions.row(2) *= 1.01;
-  tube.symmetry = Symmetry::screw(tube.symmetry.translation() * 1.01, tube.symmetry.twist(),
-                                  tube.symmetry.rotationOrder());
+  setTranslation(tube, tube.symmetry.translation() * 1.01);
   return tube;
 }
 
