@@ -9,6 +9,7 @@
 #include "common/setting_entries.hpp"
 #include "common/toml_file.hpp"
 #include "common/toml_table.hpp"
+#include "input/cell_document.hpp"
 
 namespace mesochain::app {
 
@@ -76,15 +77,21 @@ ChainFile readChainFile(const std::string& path) {
   c.file = fs::absolute(path);
   c.dir = c.file.parent_path() / "chain-out";
   if (t.integer("format", "format = 1") != 1) t.fail("format", describe(t.at("format")), "format = 1");
-  c.cellPath = fs::absolute(c.file.parent_path() /
-                            t.string("cell", "cell = \"FILE.toml\", the filament's cell file (docs/cell-file.md)"))
-                   .lexically_normal()
-                   .string();
   if (t.has("output")) {
     const char* folder = "a folder for the stages, relative to the chain file";
     const std::string output = t.string("output", folder);
     if (output.empty()) t.fail("output", "an empty string", folder);
     c.dir = (c.file.parent_path() / output).lexically_normal();
+  }
+  const char* cellExpected =
+      "cell = \"FILE.toml\", the filament's cell file, or a table [cell] holding its sections (docs/cell-file.md)";
+  if (t.has("cell") && t.at("cell").is_table()) {
+    // Checked here as the cell reader checks a cell file (keys named cell.KEY, lines of this file).
+    objective::readCellDocument(t.at("cell"), c.file.string(), "cell");
+    c.inlineCell = t.at("cell");
+    c.cellPath = (c.dir / "cell.toml").string();
+  } else {
+    c.cellPath = fs::absolute(c.file.parent_path() / t.string("cell", cellExpected)).lexically_normal().string();
   }
   c.forceTolerance = t.positiveOr("force_tolerance", c.forceTolerance, "a force tolerance > 0 (Ha/Bohr)");
   c.beam = t.booleanOr("beam", c.beam);
@@ -110,6 +117,27 @@ ChainFile readChainFile(const std::string& path) {
                      "at least one of [stretch], [twist], [bend_soft], [bend_hard]");
   if (const auto knobs = t.table("knobs", "a table [knobs] of knob settings")) c.knobs = readKnobs(*knobs, c);
   return c;
+}
+
+std::string inlineCellText(const ChainFile& c) {
+  toml::value cell = *c.inlineCell;
+  const fs::path base = c.file.parent_path();
+  auto absolute = [&](toml::value& v, bool mustExist) {
+    if (!v.is_string()) return;  // the reader has refused it already
+    const fs::path p(v.as_string().str);
+    std::error_code ec;
+    if (p.empty() || p.is_absolute() || (mustExist && !fs::exists(base / p, ec))) return;  // e.g. a table of the project root
+    v = (base / p).string();
+  };
+  if (cell.contains("geometry") && cell.at("geometry").is_table() && cell.at("geometry").contains("file"))
+    absolute(cell.at("geometry").at("file"), false);
+  if (cell.contains("parameters") && cell.at("parameters").is_table())
+    for (auto& [key, v] : cell.at("parameters").as_table()) {
+      if (key == "prefix") absolute(v, false);
+      else if (key.find('-') != std::string::npos) absolute(v, true);
+    }
+  return fmt::format("# the [cell] of {}, written by `mesochain chain`; docs/cell-file.md\n{}",
+                     c.file.string(), toml::format(cell));
 }
 
 std::string scanFileText(const ChainFile& c, const ScanStage& s, const toml::value& keys,

@@ -2,6 +2,7 @@
 // The chain file of `mesochain chain` (TOML, format 1; docs/chain.md): the filament's cell file,
 // the protocol and the stages; and the scan files the chain generates from it.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,9 @@ struct ChainKnobs {
 struct ChainFile {
   std::filesystem::path file, dir;  // the chain file and the stages' folder (absolute)
   std::string cellPath;             // absolute
+  // An inline [cell] table (the cell file's sections in the chain file itself) instead of
+  // `cell = "FILE"`: written by the run to cell.toml in the stages' folder (cellPath).
+  std::optional<toml::value> inlineCell;
   double forceTolerance = 1e-4;     // Ha/Bohr
   int cellsPerBrick = 0;
   std::string section;              // "" = automatic
@@ -40,6 +44,10 @@ struct ChainFile {
 
 // Reads and checks the chain file; InputError naming the file and key (line) otherwise.
 ChainFile readChainFile(const std::string& path);
+
+// The inline cell as a cell file (its relative paths, [geometry] file and the [parameters]
+// prefix and tables, made absolute from the chain file's folder, where they were written).
+std::string inlineCellText(const ChainFile& chain);
 
 // The scan file of a stage: the chain's table keys verbatim, the cell, the kind, the relaxation,
 // the outputs (curve, checkpoint, relaxed structures) in the chain's folder, and (withReference)

@@ -85,12 +85,17 @@ std::string chainMarkdown(const ChainFile& c, const json& report, const beam::Be
                           row["note"].get<std::string>());
     }
   }
+  if (report.contains("plots") && !report["plots"].empty()) {
+    md += "\n## Plots\n\n";
+    for (const json& p : report["plots"])
+      md += fmt::format("![{}]({})\n", p["title"].get<std::string>(), p["file"].get<std::string>());
+  }
   if (report.contains("warnings"))
     for (const auto& w : report["warnings"]) md += "\nWarning: " + w.get<std::string>() + "\n";
   return md;
 }
 
-int checkChain(const ChainFile& c) {
+int checkChain(const ChainFile& chain) {
   // The generated scan files are read as the run reads them (the cell file with them), in a
   // temporary folder: nothing is written to the chain's folder.
   const fs::path tmp = fs::temp_directory_path() / fmt::format("mesochain-chain-check-{}", ::getpid());
@@ -102,7 +107,14 @@ int checkChain(const ChainFile& c) {
       fs::remove_all(p, ec);
     }
   } cleanup{tmp};
-  std::cout << fmt::format("chain file {}: valid; cell {}; output folder {}\nstages:\n", c.file.string(), c.cellPath,
+  ChainFile c = chain;
+  if (c.inlineCell) {  // the run writes it into the stages' folder; the check into its own
+    c.cellPath = (tmp / "cell.toml").string();
+    writeFileAtomically(c.cellPath, inlineCellText(c));
+  }
+  std::cout << fmt::format("chain file {}: valid; cell {}; output folder {}\nstages:\n", c.file.string(),
+                           chain.inlineCell ? "[cell] of the chain file (the run writes " + chain.cellPath + ")"
+                                            : chain.cellPath,
                            c.dir.string());
   std::cout << fmt::format("  reference   relax the reference cell (straight, or a sector as it is) at {:g} Ha/Bohr with its T0 -> reference.json\n",
                            c.forceTolerance);

@@ -189,6 +189,16 @@ bool scanStage(ChainRun& r, const ScanStage& stage, const toml::value& keys, con
   return true;
 }
 
+// The fit plot of one curve into FOLDER/fit-LABEL.png, listed in the report's "plots" (paths
+// relative to the chain's folder, shown by chain.md).
+void writeFitPlot(ChainRun& r, const beam::FittedCurve& fc, const std::string& folder) {
+  std::string name = "fit-" + fc.label + ".png";
+  std::replace(name.begin(), name.end(), ' ', '-');
+  fs::create_directories(r.c.dir / folder);
+  beam::writeFitPlot(fc, (r.c.dir / folder / name).string());
+  r.report["plots"].push_back({{"title", fc.label + " fit"}, {"file", folder + "/" + name}});
+}
+
 // beam: the curves -> beam.json, model.toml, cantilever.toml and the fit plots (rerun every
 // time: well under a second).
 beam::BeamRun beamStage(ChainRun& r, beam::BeamInputs bin) {
@@ -207,11 +217,7 @@ beam::BeamRun beamStage(ChainRun& r, beam::BeamInputs bin) {
   requireFiniteJson(run.report, (beamDir / "beam.json").string());
   writeFileAtomically((beamDir / ex.modelFile).string(), model);
   writeFileAtomically((beamDir / "cantilever.toml").string(), scene);
-  for (const beam::FittedCurve& fc : run.curves) {
-    std::string name = "fit-" + fc.label + ".png";
-    std::replace(name.begin(), name.end(), ' ', '-');
-    beam::writeFitPlot(fc, (beamDir / name).string());
-  }
+  for (const beam::FittedCurve& fc : run.curves) writeFitPlot(r, fc, "beam");
   writeFileAtomically((beamDir / "beam.json").string(), run.report.dump(2) + "\n");
   r.log({{"stage", "beam"}, {"status", "ran"}, {"seconds", secondsSince(t0)},
          {"outputs", (beamDir / "beam.json").string()}});
@@ -228,6 +234,7 @@ void curveFits(ChainRun& r, const beam::BeamInputs& bin) {
   for (const beam::ScanCurve& curve : bin.curves) {
     const beam::CurveConstant q = beam::curveConstant(curve);
     const beam::FittedCurve fc = beam::fitScanCurve(curve, q.name, q.key, bin.tolerance, bin.linearTerm, false);
+    writeFitPlot(r, fc, "fits");
     r.report["constants"][curve.label()] = {{"quantity", q.name}, {"unit", q.unit}, {"value", fc.fit.stiffness},
                                            {"uncertainty", fc.fit.uncertainty}, {"source", curve.source}};
     for (const std::string& w : fc.warnings) r.report["warnings"].push_back(curve.label() + ": " + w);
@@ -309,7 +316,11 @@ void knobsStage(ChainRun& r) {
     workflows::KnobsRequest q;
     q.scanFile = (r.c.dir / (stage + ".scan.toml")).string();
     q.scanOutputDir = r.c.dir.string();
-    q.kpoints = k.kpoints;
+    // A bend scan of rings made from a straight cell takes `sampling` (the straight cell's kappa
+    // points and the rings' samples together); `kpoints` alone would change only its straight
+    // point and mix a sampling mismatch into the curve (docs/benchmarks.md, bench knobs step 2).
+    const bool bend = stage.rfind("bend", 0) == 0;
+    if (!(bend && !k.sampling.empty())) q.kpoints = k.kpoints;
     q.angular = k.angular;
     q.sampling = k.sampling;
     q.dispersion = k.dispersion;
@@ -324,6 +335,8 @@ void knobsStage(ChainRun& r) {
       const workflows::KnobsTable table = workflows::runKnobs(q);
       writeFileAtomically(out.string(), workflows::knobsJson(table).dump(2) + "\n");
       writeFileAtomically((dir / (stage + ".csv")).string(), workflows::knobsCsv(table));
+      fs::remove(dir / (stage + ".png"));  // a table without differences has no plot
+      workflows::writeKnobsPlot(table, (dir / (stage + ".png")).string());
       rec["seconds"] = rec.value("seconds", 0.0) + secondsSince(start);
       t = {{"input_hash", hash}};
       r.saveState();
@@ -331,6 +344,8 @@ void knobsStage(ChainRun& r) {
     }
     json j = json::parse(readText(out));
     j["stage"] = stage;
+    if (fs::exists(dir / (stage + ".png")))
+      r.report["plots"].push_back({{"title", stage + " knobs: error against time"}, {"file", "knobs/" + stage + ".png"}});
     tables.push_back(j);
   }
   r.report["knobs"] = tables;
@@ -345,6 +360,7 @@ int runChain(const ChainOptions& o) {
   r.c = readChainFile(o.file);
   if (o.check) return checkChain(r.c);
   fs::create_directories(r.c.dir);
+  if (r.c.inlineCell) writeFileAtomically(r.c.cellPath, inlineCellText(r.c));
   r.statePath = r.c.dir / "chain-state.json";
   if (fs::exists(r.statePath)) {
     r.state = json::parse(readText(r.statePath), nullptr, false);
@@ -357,6 +373,7 @@ int runChain(const ChainOptions& o) {
   r.report["format"] = 1;
   r.report["chain_file"] = r.c.file.string();
   r.report["stages"] = json::array();
+  r.report["plots"] = json::array();
   r.budget = o.stopAfter;
   if (!referenceStage(r)) {
     std::cout << "chain: stopped before the reference; rerun to continue\n";

@@ -11,6 +11,8 @@
 
 namespace mesochain::objective {
 
-CellInput readCellDocument(const toml::value& document, const std::string& source);
+// `name`: the dotted path of the document's table in its file ("" for a whole cell file; "cell"
+// for the inline [cell] of a chain file), prefixed to the keys errors name.
+CellInput readCellDocument(const toml::value& document, const std::string& source, const std::string& name = "");
 
 }  // namespace mesochain::objective

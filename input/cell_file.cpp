@@ -222,12 +222,13 @@ CellInput readCellFile(const std::string& path) {
   return readCellDocument(parseTomlFile(path, "cell file"), path);
 }
 
-CellInput readCellDocument(const toml::value& data, const std::string& path) {
+CellInput readCellDocument(const toml::value& data, const std::string& path, const std::string& name) {
   CellInput in;
   in.source = path;
   if (!data.is_table())
-    throw InputError(path, "the document", typeName(data), "a table of the cell-file sections");
-  const TomlTable root(path, data, "");
+    throw InputError(path, name.empty() ? "the document" : "key " + name, typeName(data),
+                     "a table of the cell-file sections");
+  const TomlTable root(path, data, name);
   root.allowOnly({"format", "geometry", "builder", "symmetry", "kpoints", "electrons", "parameters",
                   "dispersion", "scc", "task"});
   const long format = root.integer("format", "format = 1");

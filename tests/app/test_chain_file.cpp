@@ -61,7 +61,8 @@ TEST(ChainFile, CollapsedTubeExampleReadsEveryField) {
   EXPECT_EQ(c.knobs.stages, (std::vector<std::string>{"stretch", "bend_soft"}));
   EXPECT_EQ(c.knobs.kpoints, (std::vector<std::string>{"12", "48"}));
   EXPECT_EQ(c.knobs.dispersion, (std::vector<std::string>{"cutoff:20", "ewald"}));
-  EXPECT_TRUE(c.knobs.angular.empty() && c.knobs.sampling.empty() && c.knobs.temperature.empty());
+  EXPECT_EQ(c.knobs.sampling, (std::vector<std::string>{"12:6", "48:24"}));
+  EXPECT_TRUE(c.knobs.angular.empty() && c.knobs.temperature.empty());
 
   // The stretch's scan file: the stage's keys, its [dimensions], and what the chain sets.
   std::istringstream in(scanFileText(c, *c.scans[0].first, c.scans[0].second, "stretch", true));
@@ -83,16 +84,47 @@ TEST(ChainFile, CollapsedTubeExampleReadsEveryField) {
   EXPECT_FALSE(bend.contains("reference"));
 }
 
-TEST(ChainFile, BilayerExampleHasNoBeam) {
+TEST(ChainFile, BilayerExampleHasNoBeamAndItsCellInline) {
   const ChainFile c = readChainFile((kExamples / "chain-graphene-bilayer.toml").string());
   EXPECT_EQ(c.dir, (fs::absolute(kExamples) / "chain-graphene-bilayer").lexically_normal());
-  EXPECT_EQ(c.cellPath, (fs::absolute(kExamples) / "sector-3535-4040.toml").lexically_normal().string());
+  // The inline [cell] is written by the run into the stages' folder.
+  ASSERT_TRUE(c.inlineCell.has_value());
+  EXPECT_EQ(c.cellPath, (c.dir / "cell.toml").string());
+  std::istringstream cellText(inlineCellText(c));
+  const toml::value cell = toml::parse(cellText, "cell.toml");
+  EXPECT_EQ(toml::find<std::string>(cell, "builder", "type"), "graphene_ring");
+  EXPECT_EQ(toml::find<long>(cell, "builder", "layers"), 2);
+  EXPECT_EQ(toml::find<std::string>(cell, "parameters", "set"), "pbc-0-3");
   EXPECT_FALSE(c.beam);
   EXPECT_EQ(c.cellsPerBrick, 0);
   EXPECT_EQ(c.section, "");
   EXPECT_EQ(c.cantileverTolerance, 0.01);
   EXPECT_EQ(stageNames(c), (std::vector<std::string>{"bend_soft"}));
   EXPECT_FALSE(c.knobs.given);
+}
+
+// An inline cell's relative paths are those of the chain file's folder; the cell file the run
+// writes elsewhere holds them absolute, and a bad key of the cell names cell.KEY and its line.
+TEST(ChainFile, InlineCellPathsAreTheChainFilesFolder) {
+  const fs::path dir = fs::temp_directory_path() / ("chain-inline-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "skf");
+  fs::copy_file(fs::path(MESOCHAIN_SOURCE_DIR) / "params" / "pbc-0-3" / "C-C.skf", dir / "skf" / "C-C.skf");
+  const std::string head = "format = 1\nbeam = false\n[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n";
+  const std::string cell =
+      "[cell]\nformat = 1\n[cell.builder]\ntype = \"nanotube\"\nn = 5\nm = 5\ncell = \"translational\"\n"
+      "[cell.kpoints]\nhelical = 8\n[cell.electrons]\ntemperature = 300\n[cell.parameters]\nprefix = \"skf/\"\n";
+  std::ofstream(dir / "chain.toml") << head << cell;
+  const ChainFile c = readChainFile((dir / "chain.toml").string());
+  std::istringstream text(inlineCellText(c));
+  const toml::value written = toml::parse(text, "cell.toml");
+  EXPECT_EQ(toml::find<std::string>(written, "parameters", "prefix"), (dir / "skf/").string());
+  std::string bad = cell;
+  bad.replace(bad.find("temperature = 300"), 17, "temperature = -3");
+  std::ofstream(dir / "bad.toml") << head << bad;
+  expectInputError([&] { readChainFile((dir / "bad.toml").string()); },
+                   {"bad.toml", "cell.electrons.temperature", "line 15"});
+  fs::remove_all(dir);
 }
 
 // The files of tests/cli/test_cli_chain.cpp: defaults (output folder, no section), stage order

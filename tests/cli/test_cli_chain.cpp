@@ -4,9 +4,12 @@
 // reference (relaxed once, T0 found) is the one a scan finds by itself; the mDEM cantilever of
 // the fitted bricks agrees with beam theory; the knobs' table is the one of `mesochain bench
 // knobs`; the examples pass --check.
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -187,6 +190,9 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
   EXPECT_NE(rows[0]["relative_difference"].get<double>(), 0.0);  // 4 k-points differ from 16
   const std::string md = mesochain::testing::slurp(dir / "chain-out" / "chain.md");
   EXPECT_NE(md.find("Accuracy against time"), std::string::npos) << md;
+  // Its plot (error against time per evaluation, as bench knobs --png) is written and shown.
+  EXPECT_TRUE(fs::exists(dir / "chain-out" / "knobs" / "stretch.png"));
+  EXPECT_NE(md.find("(knobs/stretch.png)"), std::string::npos) << md;
   // Rerun: nothing changed, the table is kept.
   ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
   EXPECT_EQ(status(readJson(dir / "chain-out" / "chain.json"), "knobs").rfind("skipped", 0), 0u);
@@ -195,6 +201,120 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
                                      "[stretch]\nstrains = [0.01]\n[knobs]\nkpoints = [0]\n";
   EXPECT_EQ(runMesochain("chain bad.toml --check", dir, out), 2);
   EXPECT_NE(out.find("knobs.kpoints"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+// The constants and the cantilever of a report, without the paths of their sources.
+json reportNumbers(const json& report) {
+  json n = {{"cantilever", report["cantilever"]}, {"reference", report["reference"]}};
+  n["reference"].erase("file");
+  for (const auto& [key, v] : report["constants"].items())
+    n[key] = v.is_object() ? json{v["value"], v["uncertainty"]} : v;
+  return n;
+}
+
+// Killed (SIGKILL) at several moments of its run, each time rerun: the chain ends with the
+// report of an uninterrupted run, bit for bit (finished points restored from the checkpoints,
+// files written atomically so a kill never leaves a half-written one behind).
+TEST(CliChain, KilledAtAnyMomentResumesToTheUninterruptedReport) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-kill-{}", ::getpid());
+  fs::remove_all(dir);
+  for (const char* sub : {"whole", "killed"}) fs::create_directories(dir / sub);
+  std::string out;
+  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o ../cnt55t.toml", dir / "whole",
+                         out),
+            0)
+      << out;
+  const std::string chain = "format = 1\ncell = \"../cnt55t.toml\"\nforce_tolerance = 1e-4\ncells_per_brick = 4\n"
+                            "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n[twist]\ntwist_deg_per_cell = [-0.4, -0.2, 0.2, 0.4]\n"
+                            "[bend_soft]\nrotation_orders = [1280, 640]\nring_angular = 4\n";
+  for (const char* sub : {"whole", "killed"}) std::ofstream(dir / sub / "chain.toml") << chain;
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(runMesochain("chain chain.toml", dir / "whole", out), 0) << out;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Kills after 5 %, 20 %, ... of the whole run's time, each run continuing the previous one.
+  int interrupted = 0;
+  for (const double share : {0.05, 0.2, 0.35, 0.5, 0.65, 0.8}) {
+    const std::string cmd = fmt::format(
+        "cd {} && (OMP_NUM_THREADS=1 CI=true {} chain chain.toml > log.txt 2>&1 & pid=$!; sleep {:.3f}; "
+        "kill -9 $pid 2>/dev/null; wait $pid) > /dev/null 2>&1",
+        (dir / "killed").string(), MESOCHAIN_BINARY, share * seconds);
+    std::system(cmd.c_str());
+    if (!fs::exists(dir / "killed" / "chain-out" / "chain.json")) ++interrupted;
+  }
+  EXPECT_GE(interrupted, 2) << "the kills came after the run had finished: nothing was tested";
+  ASSERT_EQ(runMesochain("chain chain.toml", dir / "killed", out), 0) << out;
+  const json whole = readJson(dir / "whole" / "chain-out" / "chain.json");
+  const json killed = readJson(dir / "killed" / "chain-out" / "chain.json");
+  EXPECT_EQ(reportNumbers(killed), reportNumbers(whole)) << killed.dump(2);
+  fs::remove_all(dir);
+}
+
+// The cell's sections inline in the chain file ([cell]): one file for the filament and the
+// protocol, the same report as with a cell file; its errors name cell.KEY and the chain file.
+TEST(CliChain, InlineCellIsTheCellFile) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-inline-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string out;
+  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
+      << out;
+  const std::string stages = "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n[bend_soft]\nrotation_orders = [1280, 640]\n"
+                             "ring_angular = 4\n";
+  std::ofstream(dir / "file.toml") << "format = 1\ncell = \"cnt55t.toml\"\noutput = \"file-out\"\nbeam = false\n"
+                                   << stages;
+  // The same cell file with every table moved under [cell].
+  std::string inlined = "format = 1\nbeam = false\noutput = \"inline-out\"\n" + stages + "[cell]\n";
+  std::istringstream cellText(mesochain::testing::slurp(dir / "cnt55t.toml"));
+  for (std::string line; std::getline(cellText, line);)
+    inlined += (line.size() > 1 && line[0] == '[' ? "[cell." + line.substr(1) : line) + "\n";
+  std::ofstream(dir / "inline.toml") << inlined;
+  ASSERT_EQ(runMesochain("chain inline.toml --check", dir, out), 0) << out;
+  EXPECT_FALSE(fs::exists(dir / "inline-out"));  // --check writes nothing
+  ASSERT_EQ(runMesochain("chain file.toml", dir, out), 0) << out;
+  ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
+  EXPECT_TRUE(fs::exists(dir / "inline-out" / "cell.toml"));
+  const json a = readJson(dir / "file-out" / "chain.json"), b = readJson(dir / "inline-out" / "chain.json");
+  for (const char* key : {"stretch", "bend soft"}) {
+    ASSERT_TRUE(b["constants"].contains(key)) << b.dump(2);
+    EXPECT_EQ(b["constants"][key]["value"], a["constants"][key]["value"]) << key;
+    EXPECT_EQ(b["constants"][key]["uncertainty"], a["constants"][key]["uncertainty"]) << key;
+  }
+  // Fit plots are written and listed in the report (beam = false: fits/).
+  EXPECT_TRUE(fs::exists(dir / "inline-out" / "fits" / "fit-stretch.png"));
+  EXPECT_NE(mesochain::testing::slurp(dir / "inline-out" / "chain.md").find("![stretch fit](fits/fit-stretch.png)"),
+            std::string::npos);
+  // A bad value in the inline cell: the chain file, its line and the key under cell.
+  std::string bad = inlined;
+  const std::size_t at = bad.find("temperature = ");
+  ASSERT_NE(at, std::string::npos);
+  bad.replace(at, bad.find('\n', at) - at, "temperature = -3.0");
+  std::ofstream(dir / "bad.toml") << bad;
+  EXPECT_EQ(runMesochain("chain bad.toml --check", dir, out), 2);
+  EXPECT_NE(out.find("bad.toml"), std::string::npos) << out;
+  EXPECT_NE(out.find("cell.electrons.temperature"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+// The bilayer example, run (seconds): its bonded rings follow the plate formula of the separately
+// measured monolayer, D = N D1 + C11 Z^2 N (N^2 - 1) / 12 (docs/filament-constants.md, section 2:
+// D1 = 1.4449 eV from the monolayer rings, C11 = 26.41 eV/A^2 from the stretched monolayer ring,
+// Z = 3.390 A the bilayer's measured spacing), to the 0.14-0.28 % found there for every N.
+TEST(CliChain, BilayerExampleFollowsThePlateFormula) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-bilayer-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(MESOCHAIN_SOURCE_DIR) / "examples" / "chain-graphene-bilayer.toml", dir / "bilayer.toml");
+  std::string out;
+  ASSERT_EQ(runMesochain("chain bilayer.toml", dir, out), 0) << out;
+  const json report = readJson(dir / "chain-graphene-bilayer" / "chain.json");
+  const double perCell = report["constants"]["bend soft"]["value"].get<double>();  // Ha Bohr^2 per ring cell
+  const double bohr = 0.529177210903, hartree = 27.211386245988;                    // A, eV
+  const double arc = 3.0 * 1.429444 / bohr;  // the cell's arc on the middle plane (armchair: 3 bonds)
+  const double dft = perCell / (arc * report["reference"]["T0_bohr"].get<double>()) * hartree;  // eV
+  const double plate = 2.0 * 1.4449 + 26.41 * 3.390 * 3.390 * 2.0 * 3.0 / 12.0;
+  EXPECT_NEAR(dft / plate, 1.0, 4e-3) << dft << " eV against the plate's " << plate;
+  EXPECT_GT(dft / plate, 1.0);  // the bonded rings lie above it (the stack's in-plane lattice)
   fs::remove_all(dir);
 }
 
