@@ -126,7 +126,8 @@ std::string inlineCellText(const ChainFile& c) {
     if (!v.is_string()) return;  // the reader has refused it already
     const fs::path p(v.as_string().str);
     std::error_code ec;
-    if (p.empty() || p.is_absolute() || (mustExist && !fs::exists(base / p, ec))) return;  // e.g. a table of the project root
+    // A table that is not beside the chain file is one of the project root (the reader's fallback).
+    if (p.empty() || p.is_absolute() || (mustExist && !fs::exists(base / p, ec))) return;
     v = (base / p).string();
   };
   if (cell.contains("geometry") && cell.at("geometry").is_table() && cell.at("geometry").contains("file"))
