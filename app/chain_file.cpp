@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "beam/beam_run.hpp"
 #include "common/errors.hpp"
@@ -87,9 +88,12 @@ ChainFile readChainFile(const std::string& path) {
       "cell = \"FILE.toml\", the filament's cell file, or a table [cell] holding its sections (docs/cell-file.md)";
   if (t.has("cell") && t.at("cell").is_table()) {
     // Checked here as the cell reader checks a cell file (keys named cell.KEY, lines of this file).
-    objective::readCellDocument(t.at("cell"), c.file.string(), "cell");
+    const objective::CellInput cell = objective::readCellDocument(t.at("cell"), c.file.string(), "cell");
     c.inlineCell = t.at("cell");
-    c.cellPath = (c.dir / "cell.toml").string();
+    c.cellPath = (c.dir / "chain-cell.toml").string();
+    if (t.at("cell").contains("parameters") && t.at("cell").at("parameters").is_table())
+      for (const auto& [key, v] : t.at("cell").at("parameters").as_table())
+        if (cell.parameterFiles.count(key)) c.inlineCellTables[key] = cell.parameterFiles.at(key);
   } else {
     c.cellPath = fs::absolute(c.file.parent_path() / t.string("cell", cellExpected)).lexically_normal().string();
   }
@@ -122,24 +126,44 @@ ChainFile readChainFile(const std::string& path) {
 std::string inlineCellText(const ChainFile& c) {
   toml::value cell = *c.inlineCell;
   const fs::path base = c.file.parent_path();
-  auto absolute = [&](toml::value& v, bool mustExist) {
+  auto absolute = [&](toml::value& v) {
     if (!v.is_string()) return;  // the reader has refused it already
     const fs::path p(v.as_string().str);
-    std::error_code ec;
-    // A table that is not beside the chain file is one of the project root (the reader's fallback).
-    if (p.empty() || p.is_absolute() || (mustExist && !fs::exists(base / p, ec))) return;
-    v = (base / p).string();
+    if (!p.empty() && !p.is_absolute()) v = (base / p).string();
   };
   if (cell.contains("geometry") && cell.at("geometry").is_table() && cell.at("geometry").contains("file"))
-    absolute(cell.at("geometry").at("file"), false);
+    absolute(cell.at("geometry").at("file"));
   if (cell.contains("parameters") && cell.at("parameters").is_table())
     for (auto& [key, v] : cell.at("parameters").as_table()) {
-      if (key == "prefix") absolute(v, false);
-      else if (key.find('-') != std::string::npos) absolute(v, true);
+      if (key == "prefix") absolute(v);
+      // A table as the reader found it (beside the chain file, else in the project root).
+      else if (c.inlineCellTables.count(key)) v = c.inlineCellTables.at(key);
     }
   return fmt::format("# the [cell] of {}, written by `mesochain chain`; docs/cell-file.md\n{}",
                      c.file.string(), toml::format(cell));
 }
+
+namespace {
+nlohmann::json canonical(const toml::value& v) {
+  if (v.is_table()) {
+    nlohmann::json o = nlohmann::json::object();  // std::map: keys sorted
+    for (const auto& [key, x] : v.as_table()) o[key] = canonical(x);
+    return o;
+  }
+  if (v.is_array()) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& x : v.as_array()) a.push_back(canonical(x));
+    return a;
+  }
+  if (v.is_boolean()) return v.as_boolean();
+  if (v.is_integer()) return v.as_integer();
+  if (v.is_floating()) return v.as_floating();
+  if (v.is_string()) return v.as_string().str;
+  return toml::format(v);  // dates and times: as written
+}
+}  // namespace
+
+std::string inlineCellIdentity(const ChainFile& c) { return canonical(*c.inlineCell).dump(); }
 
 std::string scanFileText(const ChainFile& c, const ScanStage& s, const toml::value& keys,
                          const std::string& outputName, bool withReference) {

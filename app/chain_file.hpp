@@ -2,6 +2,7 @@
 // The chain file of `mesochain chain` (TOML, format 1; docs/chain.md): the filament's cell file,
 // the protocol and the stages; and the scan files the chain generates from it.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -31,6 +32,7 @@ struct ChainFile {
   // An inline [cell] table (the cell file's sections in the chain file itself) instead of
   // `cell = "FILE"`: written by the run to cell.toml in the stages' folder (cellPath).
   std::optional<toml::value> inlineCell;
+  std::map<std::string, std::string> inlineCellTables;  // its "A-B" tables as the cell reader found them
   double forceTolerance = 1e-4;     // Ha/Bohr
   int cellsPerBrick = 0;
   std::string section;              // "" = automatic
@@ -48,6 +50,9 @@ ChainFile readChainFile(const std::string& path);
 // The inline cell as a cell file (its relative paths, [geometry] file and the [parameters]
 // prefix and tables, made absolute from the chain file's folder, where they were written).
 std::string inlineCellText(const ChainFile& chain);
+// The inline cell's content in a canonical form (keys sorted, numbers in shortest round-trip
+// form): part of the stages' input hash, independent of how toml11 orders a table.
+std::string inlineCellIdentity(const ChainFile& chain);
 
 // The scan file of a stage: the chain's table keys verbatim, the cell, the kind, the relaxation,
 // the outputs (curve, checkpoint, relaxed structures) in the chain's folder, and (withReference)

@@ -75,8 +75,11 @@ std::string chainMarkdown(const ChainFile& c, const json& report, const beam::Be
       return x.is_number() ? fmt::format(fmt::runtime(spec), x.get<double>()) : std::string("-");
     };
     for (const json& t : report["knobs"]) {
-      md += fmt::format("\n### {} ({})\n\n| knob | setting | {} | error | time (s) | note |\n|---|---|---|---|---|---|\n",
-                        t["stage"].get<std::string>(), t["kind"].get<std::string>(), t["quantity"].get<std::string>());
+      md += fmt::format("\n### {} ({})\n\n", t["stage"].get<std::string>(), t["kind"].get<std::string>());
+      if (t.contains("knobs_not_applied"))
+        for (const json& n : t["knobs_not_applied"]) md += "Not applied to this stage: " + n.get<std::string>() + ".\n\n";
+      md += fmt::format("| knob | setting | {} | error | time (s) | note |\n|---|---|---|---|---|---|\n",
+                        t["quantity"].get<std::string>());
       for (const json& row : t["rows"])
         md += fmt::format("| {} | {}{}{} | {} | {} | {} | {} |\n", row["knob"].get<std::string>(),
                           row["setting"].get<std::string>(), row["scan_setting"].get<bool>() ? " (scan)" : "",

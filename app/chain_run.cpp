@@ -149,6 +149,7 @@ bool scanStage(ChainRun& r, const ScanStage& stage, const toml::value& keys, con
     if (!(rec.is_object() && rec.value("input_hash", "") == hash)) {
       fs::remove(r.c.dir / (std::string(stage.name) + ".checkpoint.json"));  // other inputs: start afresh
       rec = {{"input_hash", hash}, {"done", false}, {"seconds", 0.0}};
+      r.saveState();  // before the scan: a run killed inside it resumes from its checkpoint
     }
     writeFileAtomically(scanFile.string(), text);
     // The scan's [output] paths are relative to the chain's folder (as scan -o DIR).
@@ -316,35 +317,50 @@ void knobsStage(ChainRun& r) {
     workflows::KnobsRequest q;
     q.scanFile = (r.c.dir / (stage + ".scan.toml")).string();
     q.scanOutputDir = r.c.dir.string();
-    // A bend scan of rings made from a straight cell takes `sampling` (the straight cell's kappa
-    // points and the rings' samples together); `kpoints` alone would change only its straight
-    // point and mix a sampling mismatch into the curve (docs/benchmarks.md, bench knobs step 2).
+    // A bend scan of rings made from a straight cell (reference rotation order 1) takes
+    // `sampling` (the straight cell's kappa points and the rings' samples together); `kpoints`
+    // alone would change only its straight point and mix a sampling mismatch into the curve
+    // (docs/benchmarks.md, bench knobs step 2). `angular` applies to bends only, `sampling` to
+    // bends of a straight cell only. A knob not applied is said in the report.
     const bool bend = stage.rfind("bend", 0) == 0;
-    if (!(bend && !k.sampling.empty())) q.kpoints = k.kpoints;
-    q.angular = k.angular;
-    q.sampling = k.sampling;
+    const bool rings = bend && r.report["reference"]["rotation_order"].get<int>() == 1;
+    json notApplied = json::array();
+    if (rings && !k.sampling.empty()) {
+      if (!k.kpoints.empty())
+        notApplied.push_back("kpoints (sampling varies the straight cell's kappa points and the rings' samples together)");
+    } else {
+      q.kpoints = k.kpoints;
+    }
+    if (bend) q.angular = k.angular;
+    else if (!k.angular.empty()) notApplied.push_back("angular (bend stages only)");
+    if (rings) q.sampling = k.sampling;
+    else if (!k.sampling.empty()) notApplied.push_back("sampling (bend stages of a straight cell only)");
     q.dispersion = k.dispersion;
     q.temperature = k.temperature;
     q.where = {r.c.file.string(), "knobs."};
     json settings = {q.kpoints, q.angular, q.sampling, q.dispersion, q.temperature};
     const std::string hash = chainHash(settings.dump() + readText(r.c.dir / (stage + ".json")));
-    const fs::path out = dir / (stage + ".json");
+    const fs::path out = dir / (stage + ".json"), png = dir / (stage + ".png");
     json& t = rec["tables"][stage];
-    if (!(t.is_object() && t.value("input_hash", "") == hash && fs::exists(out))) {
+    // A table whose plot should exist but does not (deleted, or written by an older version) is
+    // computed again.
+    const bool plotMissing = t.is_object() && t.value("plot", true) && !fs::exists(png);
+    if (!(t.is_object() && t.value("input_hash", "") == hash && fs::exists(out) && !plotMissing)) {
       const auto start = std::chrono::steady_clock::now();
       const workflows::KnobsTable table = workflows::runKnobs(q);
       writeFileAtomically(out.string(), workflows::knobsJson(table).dump(2) + "\n");
       writeFileAtomically((dir / (stage + ".csv")).string(), workflows::knobsCsv(table));
-      fs::remove(dir / (stage + ".png"));  // a table without differences has no plot
-      workflows::writeKnobsPlot(table, (dir / (stage + ".png")).string());
+      fs::remove(png);  // a table without differences has no plot
+      const bool plotted = workflows::writeKnobsPlot(table, png.string());
       rec["seconds"] = rec.value("seconds", 0.0) + secondsSince(start);
-      t = {{"input_hash", hash}};
+      t = {{"input_hash", hash}, {"plot", plotted}};
       r.saveState();
       ++ran;
     }
     json j = json::parse(readText(out));
     j["stage"] = stage;
-    if (fs::exists(dir / (stage + ".png")))
+    if (!notApplied.empty()) j["knobs_not_applied"] = notApplied;
+    if (fs::exists(png))
       r.report["plots"].push_back({{"title", stage + " knobs: error against time"}, {"file", "knobs/" + stage + ".png"}});
     tables.push_back(j);
   }
@@ -360,7 +376,14 @@ int runChain(const ChainOptions& o) {
   r.c = readChainFile(o.file);
   if (o.check) return checkChain(r.c);
   fs::create_directories(r.c.dir);
-  if (r.c.inlineCell) writeFileAtomically(r.c.cellPath, inlineCellText(r.c));
+  if (r.c.inlineCell) {
+    // The run's copy of the inline cell; never over a file it did not write.
+    const std::string old = fs::exists(r.c.cellPath) ? readText(r.c.cellPath) : std::string();
+    if (!old.empty() && old.rfind("# the [cell] of ", 0) != 0)
+      throw InputError(r.c.file.string(), "table [cell]", r.c.cellPath + " exists and was not written by a chain",
+                       "an output folder without a file of that name (the run writes the inline cell there)");
+    writeFileAtomically(r.c.cellPath, inlineCellText(r.c));
+  }
   r.statePath = r.c.dir / "chain-state.json";
   if (fs::exists(r.statePath)) {
     r.state = json::parse(readText(r.statePath), nullptr, false);
@@ -368,7 +391,8 @@ int runChain(const ChainOptions& o) {
       throw InputError(r.statePath.string(), "the chain state", "not a JSON object",
                        "the file a chain writes (delete it to rerun every stage)");
   }
-  const std::string cellText = readText(r.c.cellPath);
+  // The cell's content in the stages' input hash (an inline cell in canonical form).
+  const std::string cellText = r.c.inlineCell ? inlineCellIdentity(r.c) : readText(r.c.cellPath);
   if (cellText.empty()) throw InputError(r.c.file.string(), "key cell", r.c.cellPath, "a readable cell file");
   r.report["format"] = 1;
   r.report["chain_file"] = r.c.file.string();

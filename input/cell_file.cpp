@@ -168,7 +168,7 @@ void readParameters(const TomlTable& root, CellInput& in) {
   for (const auto& a : species)
     for (const auto& b : species)
       if (!in.parameterFiles.count(a + "-" + b))
-        throw InputError(in.source, "table [parameters]",
+        throw InputError(in.source, "table [" + t->name() + "]",
                          "no table for the element pair " + a + "-" + b,
                          "set = \"NAME\" or an entry \"" + a + "-" + b + "\" = \"path\"");
   if (const auto m = t->table("max_angular_momentum", "an inline table such as { C = \"p\", H = \"s\" }")) {

@@ -89,7 +89,7 @@ TEST(ChainFile, BilayerExampleHasNoBeamAndItsCellInline) {
   EXPECT_EQ(c.dir, (fs::absolute(kExamples) / "chain-graphene-bilayer").lexically_normal());
   // The inline [cell] is written by the run into the stages' folder.
   ASSERT_TRUE(c.inlineCell.has_value());
-  EXPECT_EQ(c.cellPath, (c.dir / "cell.toml").string());
+  EXPECT_EQ(c.cellPath, (c.dir / "chain-cell.toml").string());
   std::istringstream cellText(inlineCellText(c));
   const toml::value cell = toml::parse(cellText, "cell.toml");
   EXPECT_EQ(toml::find<std::string>(cell, "builder", "type"), "graphene_ring");
@@ -119,6 +119,19 @@ TEST(ChainFile, InlineCellPathsAreTheChainFilesFolder) {
   std::istringstream text(inlineCellText(c));
   const toml::value written = toml::parse(text, "cell.toml");
   EXPECT_EQ(toml::find<std::string>(written, "parameters", "prefix"), (dir / "skf/").string());
+  // An explicit table: beside the chain file if it is there, else the project root's, written
+  // absolute either way (as the reader found it).
+  for (const char* table : {"skf/C-C.skf", "params/pbc-0-3/C-C.skf"}) {
+    std::string explicitTable = cell;
+    explicitTable.replace(explicitTable.find("prefix = \"skf/\""), 15, "set = \"pbc-0-3\"\n\"C-C\" = \"" + std::string(table) + "\"");
+    std::ofstream(dir / "table.toml") << head << explicitTable;
+    const ChainFile e = readChainFile((dir / "table.toml").string());
+    std::istringstream t(inlineCellText(e));
+    const fs::path found = fs::path(toml::find<std::string>(toml::parse(t, "cell.toml"), "parameters", "C-C"));
+    EXPECT_TRUE(found.is_absolute()) << found;
+    EXPECT_TRUE(fs::is_regular_file(found)) << found;
+    EXPECT_EQ(found.filename(), "C-C.skf");
+  }
   std::string bad = cell;
   bad.replace(bad.find("temperature = 300"), 17, "temperature = -3");
   std::ofstream(dir / "bad.toml") << head << bad;

@@ -165,7 +165,7 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
   // A stretch alone, fitted without a beam (beam = false), with the k-point knob.
   std::ofstream(dir / "chain.toml") << "format = 1\ncell = \"cnt55t.toml\"\nbeam = false\n"
                                        "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n"
-                                       "[knobs]\nkpoints = [4, 16]\n";
+                                       "[knobs]\nkpoints = [4, 16]\nangular = [2]\n";
   ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
   const json report = readJson(dir / "chain-out" / "chain.json");
   EXPECT_EQ(status(report, "knobs"), "ran");
@@ -190,6 +190,8 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
   EXPECT_NE(rows[0]["relative_difference"].get<double>(), 0.0);  // 4 k-points differ from 16
   const std::string md = mesochain::testing::slurp(dir / "chain-out" / "chain.md");
   EXPECT_NE(md.find("Accuracy against time"), std::string::npos) << md;
+  // A knob that does not apply to a stage is said, not silently dropped.
+  EXPECT_NE(md.find("Not applied to this stage: angular (bend stages only)"), std::string::npos) << md;
   // Its plot (error against time per evaluation, as bench knobs --png) is written and shown.
   EXPECT_TRUE(fs::exists(dir / "chain-out" / "knobs" / "stretch.png"));
   EXPECT_NE(md.find("(knobs/stretch.png)"), std::string::npos) << md;
@@ -232,18 +234,25 @@ TEST(CliChain, KilledAtAnyMomentResumesToTheUninterruptedReport) {
   const auto t0 = std::chrono::steady_clock::now();
   ASSERT_EQ(runMesochain("chain chain.toml", dir / "whole", out), 0) << out;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // Kills after 5 %, 20 %, ... of the whole run's time, each run continuing the previous one.
-  int interrupted = 0;
-  for (const double share : {0.05, 0.2, 0.35, 0.5, 0.65, 0.8}) {
-    const std::string cmd = fmt::format(
-        "cd {} && (OMP_NUM_THREADS=1 CI=true {} chain chain.toml > log.txt 2>&1 & pid=$!; sleep {:.3f}; "
-        "kill -9 $pid 2>/dev/null; wait $pid) > /dev/null 2>&1",
-        (dir / "killed").string(), MESOCHAIN_BINARY, share * seconds);
-    std::system(cmd.c_str());
+  // First a kill as soon as the stretch has checkpointed a point, then kills after 5 %, 20 %, ...
+  // of the whole run's time, each run continuing the previous one (their logs appended).
+  const std::string run = fmt::format("cd {} && (OMP_NUM_THREADS=1 CI=true {} chain chain.toml >> all.log 2>&1 & pid=$!; ",
+                                      (dir / "killed").string(), MESOCHAIN_BINARY);
+  std::system((run + "while [ ! -f chain-out/stretch.checkpoint.json ] && kill -0 $pid 2>/dev/null; do sleep 0.002; "
+                     "done; kill -9 $pid 2>/dev/null; wait $pid) > /dev/null 2>&1")
+                  .c_str());
+  int interrupted = fs::exists(dir / "killed" / "chain-out" / "chain.json") ? 0 : 1;
+  for (const double share : {0.05, 0.2, 0.35, 0.5, 0.65}) {
+    std::system(fmt::format("{}sleep {:.3f}; kill -9 $pid 2>/dev/null; wait $pid) > /dev/null 2>&1", run, share * seconds)
+                    .c_str());
     if (!fs::exists(dir / "killed" / "chain-out" / "chain.json")) ++interrupted;
   }
   EXPECT_GE(interrupted, 2) << "the kills came after the run had finished: nothing was tested";
   ASSERT_EQ(runMesochain("chain chain.toml", dir / "killed", out), 0) << out;
+  // Some run continued a stage from its checkpoint (the stretch, killed inside it) instead of
+  // starting it afresh.
+  const std::string all = mesochain::testing::slurp(dir / "killed" / "all.log") + out;
+  EXPECT_NE(all.find(" resumed ("), std::string::npos) << all;
   const json whole = readJson(dir / "whole" / "chain-out" / "chain.json");
   const json killed = readJson(dir / "killed" / "chain-out" / "chain.json");
   EXPECT_EQ(reportNumbers(killed), reportNumbers(whole)) << killed.dump(2);
@@ -273,7 +282,7 @@ TEST(CliChain, InlineCellIsTheCellFile) {
   EXPECT_FALSE(fs::exists(dir / "inline-out"));  // --check writes nothing
   ASSERT_EQ(runMesochain("chain file.toml", dir, out), 0) << out;
   ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
-  EXPECT_TRUE(fs::exists(dir / "inline-out" / "cell.toml"));
+  EXPECT_TRUE(fs::exists(dir / "inline-out" / "chain-cell.toml"));
   const json a = readJson(dir / "file-out" / "chain.json"), b = readJson(dir / "inline-out" / "chain.json");
   for (const char* key : {"stretch", "bend soft"}) {
     ASSERT_TRUE(b["constants"].contains(key)) << b.dump(2);
@@ -299,7 +308,8 @@ TEST(CliChain, InlineCellIsTheCellFile) {
 // The bilayer example, run (seconds): its bonded rings follow the plate formula of the separately
 // measured monolayer, D = N D1 + C11 Z^2 N (N^2 - 1) / 12 (docs/filament-constants.md, section 2:
 // D1 = 1.4449 eV from the monolayer rings, C11 = 26.41 eV/A^2 from the stretched monolayer ring,
-// Z = 3.390 A the bilayer's measured spacing), to the 0.14-0.28 % found there for every N.
+// Z = 3.390 A the bilayer's measured spacing), within 0.4 % (section 2 found 0.14-0.28 % above it
+// for N = 2...6; this run gives +0.18 %).
 TEST(CliChain, BilayerExampleFollowsThePlateFormula) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-bilayer-{}", ::getpid());
   fs::remove_all(dir);
@@ -314,7 +324,6 @@ TEST(CliChain, BilayerExampleFollowsThePlateFormula) {
   const double dft = perCell / (arc * report["reference"]["T0_bohr"].get<double>()) * hartree;  // eV
   const double plate = 2.0 * 1.4449 + 26.41 * 3.390 * 3.390 * 2.0 * 3.0 / 12.0;
   EXPECT_NEAR(dft / plate, 1.0, 4e-3) << dft << " eV against the plate's " << plate;
-  EXPECT_GT(dft / plate, 1.0);  // the bonded rings lie above it (the stack's in-plane lattice)
   fs::remove_all(dir);
 }
 
