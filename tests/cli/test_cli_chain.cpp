@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -206,6 +207,39 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
   fs::remove_all(dir);
 }
 
+// A bend of a straight cell takes the sampling knob (the straight kappa points and the rings'
+// samples together): with sampling given, kpoints is not applied to it, and the report says so;
+// the stretch takes kpoints and not sampling.
+TEST(CliChain, BendKnobIsSamplingWhenGiven) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-knobs-bend-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string out;
+  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
+      << out;
+  std::ofstream(dir / "chain.toml") << "format = 1\ncell = \"cnt55t.toml\"\nbeam = false\n"
+                                       "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n"
+                                       "[bend_soft]\nrotation_orders = [1280, 640]\nring_angular = 4\n"
+                                       "[knobs]\nkpoints = [16]\nsampling = [\"16:8\"]\n";
+  ASSERT_EQ(runMesochain("chain chain.toml", dir, out), 0) << out;
+  const json report = readJson(dir / "chain-out" / "chain.json");
+  ASSERT_EQ(report["knobs"].size(), 2u);
+  for (const json& table : report["knobs"]) {
+    std::set<std::string> knobs;
+    for (const json& row : table["rows"]) knobs.insert(row["knob"].get<std::string>());
+    if (table["stage"] == "stretch") {
+      EXPECT_EQ(knobs, (std::set<std::string>{"kpoints"})) << table.dump(2);
+    } else {
+      EXPECT_EQ(knobs, (std::set<std::string>{"sampling"})) << table.dump(2);
+      for (const json& row : table["rows"]) EXPECT_TRUE(row["constant"].is_number()) << row.dump();  // no refused fit
+    }
+  }
+  const std::string md = mesochain::testing::slurp(dir / "chain-out" / "chain.md");
+  EXPECT_NE(md.find("Not applied to this stage: kpoints"), std::string::npos) << md;
+  EXPECT_NE(md.find("Not applied to this stage: sampling"), std::string::npos) << md;
+  fs::remove_all(dir);
+}
+
 // The constants and the cantilever of a report, without the paths of their sources.
 json reportNumbers(const json& report) {
   json n = {{"cantilever", report["cantilever"]}, {"reference", report["reference"]}};
@@ -293,6 +327,16 @@ TEST(CliChain, InlineCellIsTheCellFile) {
   EXPECT_TRUE(fs::exists(dir / "inline-out" / "fits" / "fit-stretch.png"));
   EXPECT_NE(mesochain::testing::slurp(dir / "inline-out" / "chain.md").find("![stretch fit](fits/fit-stretch.png)"),
             std::string::npos);
+  // Rerun unchanged: skipped; the inline cell's content changed: its stages run again.
+  ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
+  EXPECT_EQ(status(readJson(dir / "inline-out" / "chain.json"), "stretch").rfind("skipped", 0), 0u);
+  std::string warmer = inlined;
+  const std::size_t t = warmer.find("temperature = ");
+  ASSERT_NE(t, std::string::npos);
+  warmer.replace(t, warmer.find('\n', t) - t, "temperature = 310.0");
+  std::ofstream(dir / "inline.toml") << warmer;
+  ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
+  EXPECT_EQ(status(readJson(dir / "inline-out" / "chain.json"), "stretch"), "ran");
   // A bad value in the inline cell: the chain file, its line and the key under cell.
   std::string bad = inlined;
   const std::size_t at = bad.find("temperature = ");
