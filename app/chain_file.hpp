@@ -30,7 +30,7 @@ struct ChainFile {
   std::filesystem::path file, dir;  // the chain file and the stages' folder (absolute)
   std::string cellPath;             // absolute
   // An inline [cell] table (the cell file's sections in the chain file itself) instead of
-  // `cell = "FILE"`: written by the run to cell.toml in the stages' folder (cellPath).
+  // `cell = "FILE"`: written by the run to chain-cell.toml in the stages' folder (cellPath).
   std::optional<toml::value> inlineCell;
   std::map<std::string, std::string> inlineCellTables;  // its "A-B" tables as the cell reader found them
   double forceTolerance = 1e-4;     // Ha/Bohr
