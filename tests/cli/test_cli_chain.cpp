@@ -210,13 +210,31 @@ TEST(CliChain, KnobsStageIsTheTableOfBenchKnobs) {
 // A bend of a straight cell takes the sampling knob (the straight kappa points and the rings'
 // samples together): with sampling given, kpoints is not applied to it, and the report says so;
 // the stretch takes kpoints and not sampling.
-TEST(CliChain, BendKnobIsSamplingWhenGiven) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-knobs-bend-{}", ::getpid());
+// A fresh temporary folder for one test, holding the (5,5) translational cell cnt55t.toml when
+// `withCell` (built by `mesochain build`, as the chain files of these tests name it).
+fs::path freshFolder(const std::string& name, bool withCell = true) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-{}-{}", name, ::getpid());
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::string out;
-  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
-      << out;
+  if (withCell) {
+    EXPECT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
+        << out;
+  }
+  return dir;
+}
+
+// `text` with its line `temperature = ...` set to `value`.
+std::string withTemperature(std::string text, const std::string& value) {
+  const std::size_t at = text.find("temperature = ");
+  EXPECT_NE(at, std::string::npos);
+  if (at != std::string::npos) text.replace(at, text.find('\n', at) - at, "temperature = " + value);
+  return text;
+}
+
+TEST(CliChain, BendKnobIsSamplingWhenGiven) {
+  const fs::path dir = freshFolder("knobs-bend");
+  std::string out;
   std::ofstream(dir / "chain.toml") << "format = 1\ncell = \"cnt55t.toml\"\nbeam = false\n"
                                        "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n"
                                        "[bend_soft]\nrotation_orders = [1280, 640]\nring_angular = 4\n"
@@ -296,12 +314,8 @@ TEST(CliChain, KilledAtAnyMomentResumesToTheUninterruptedReport) {
 // The cell's sections inline in the chain file ([cell]): one file for the filament and the
 // protocol, the same report as with a cell file; its errors name cell.KEY and the chain file.
 TEST(CliChain, InlineCellIsTheCellFile) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-inline-{}", ::getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = freshFolder("inline");
   std::string out;
-  ASSERT_EQ(runMesochain("build cnt 5 5 --cell translational --task energy --kpoints 8 -o cnt55t.toml", dir, out), 0)
-      << out;
   const std::string stages = "[stretch]\nstrains = [-0.01, -0.005, 0.005, 0.01]\n[bend_soft]\nrotation_orders = [1280, 640]\n"
                              "ring_angular = 4\n";
   std::ofstream(dir / "file.toml") << "format = 1\ncell = \"cnt55t.toml\"\noutput = \"file-out\"\nbeam = false\n"
@@ -330,19 +344,11 @@ TEST(CliChain, InlineCellIsTheCellFile) {
   // Rerun unchanged: skipped; the inline cell's content changed: its stages run again.
   ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
   EXPECT_EQ(status(readJson(dir / "inline-out" / "chain.json"), "stretch").rfind("skipped", 0), 0u);
-  std::string warmer = inlined;
-  const std::size_t t = warmer.find("temperature = ");
-  ASSERT_NE(t, std::string::npos);
-  warmer.replace(t, warmer.find('\n', t) - t, "temperature = 310.0");
-  std::ofstream(dir / "inline.toml") << warmer;
+  std::ofstream(dir / "inline.toml") << withTemperature(inlined, "310.0");
   ASSERT_EQ(runMesochain("chain inline.toml", dir, out), 0) << out;
   EXPECT_EQ(status(readJson(dir / "inline-out" / "chain.json"), "stretch"), "ran");
   // A bad value in the inline cell: the chain file, its line and the key under cell.
-  std::string bad = inlined;
-  const std::size_t at = bad.find("temperature = ");
-  ASSERT_NE(at, std::string::npos);
-  bad.replace(at, bad.find('\n', at) - at, "temperature = -3.0");
-  std::ofstream(dir / "bad.toml") << bad;
+  std::ofstream(dir / "bad.toml") << withTemperature(inlined, "-3.0");
   EXPECT_EQ(runMesochain("chain bad.toml --check", dir, out), 2);
   EXPECT_NE(out.find("bad.toml"), std::string::npos) << out;
   EXPECT_NE(out.find("cell.electrons.temperature"), std::string::npos) << out;
@@ -355,9 +361,7 @@ TEST(CliChain, InlineCellIsTheCellFile) {
 // Z = 3.390 A the bilayer's measured spacing), within 0.4 % (section 2 found 0.14-0.28 % above it
 // for N = 2...6; this run gives +0.18 %).
 TEST(CliChain, BilayerExampleFollowsThePlateFormula) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-chain-bilayer-{}", ::getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = freshFolder("bilayer", false);
   fs::copy_file(fs::path(MESOCHAIN_SOURCE_DIR) / "examples" / "chain-graphene-bilayer.toml", dir / "bilayer.toml");
   std::string out;
   ASSERT_EQ(runMesochain("chain bilayer.toml", dir, out), 0) << out;
