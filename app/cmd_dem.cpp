@@ -43,7 +43,7 @@ extern "C" void requestStop(int signal) {
 
 // The share of the run's wall time in each phase (--profile).
 void printProfile(const mdem::RunSummary& r, std::size_t elements) {
-  const long stepped = r.steps - std::max(0L, r.resumedFromStep);
+  const long stepped = r.steps - std::max(r.startStep, r.resumedFromStep);
   std::cout << fmt::format("profile ({:.4g} s of stepping and outputs, {:.4g} element-steps/s; first thread's share):\n",
                            r.wallSeconds, r.wallSeconds > 0 ? static_cast<double>(elements) * stepped / r.wallSeconds : 0.0);
   double timed = 0.0;
@@ -145,6 +145,8 @@ Command makeDemCommand() {
     if (!r.removedStale.empty())
       std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
                                r.removedStale.front());
+    if (!scene.run.startFrom.empty() && r.resumedFromStep < 0)
+      std::cout << fmt::format("started from the final state {} (step {})\n", scene.run.startFrom, r.startStep);
     if (r.resumedFromStep >= 0)
       std::cout << fmt::format("resumed from the checkpoint at step {}{}\n", r.resumedFromStep,
                                mdem::resumedBuildNote(r.resumedFromCommit).empty()
@@ -153,7 +155,7 @@ Command makeDemCommand() {
     const mdem::EnergyLedger& e = r.finalEnergies;
     std::cout << fmt::format(
         "mdem: {} elements, {} steps of {:.6g} ns (critical {:.6g} ns), t = {:.6g} ns{}\n",
-        scene.bodies.size(), r.steps, r.timeStep, r.criticalTimeStep, r.time,
+        scene.bodies.size(), r.steps - r.startStep, r.timeStep, r.criticalTimeStep, r.time,
         r.stoppedByCriterion ? ", stopped: kinetic energy below threshold" : "");
     if (r.outerStepRatio > 1)
       std::cout << fmt::format("multiple time stepping: {} every {} steps (outer step {:.6g} ns, critical {:.6g} ns, "

@@ -129,7 +129,7 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
   file.commit();
 }
 
-CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : path_(path) {
+CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene, bool sameScene) : path_(path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path, "", "no checkpoint file", "the checkpoint of the interrupted run (resume)");
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -147,7 +147,7 @@ CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : pa
                      fmt::format("version {} to {}", kOldestReadable, kVersion));
   if (in.read<std::uint32_t>() != kByteOrder)
     throw InputError(path, "checkpoint", "another byte order", "a checkpoint written on a machine of this byte order");
-  if (in.read<std::uint64_t>() != sceneFingerprint(scene))
+  if (in.read<std::uint64_t>() != sceneFingerprint(scene) && sameScene)
     throw InputError(path, "checkpoint",
                      "a checkpoint of another scene (the scene or model file, its elements, bonds, effects or time "
                      "step changed since it was written)",
@@ -156,6 +156,59 @@ CheckpointFile::CheckpointFile(const std::string& path, const Scene& scene) : pa
   prelude_ = in.readVector<unsigned char>("prelude");
   state_ = in.readVector<unsigned char>("state");
   tail_ = in.readVector<unsigned char>("run section");
+}
+
+namespace {
+constexpr const char* kFinalStateTag = "mDEM final state";
+
+// What a final state must share with the scene that starts from it: the elements (count, types,
+// the types' sizes and masses) and the bonds (ends and stiffnesses).
+std::uint64_t elementsFingerprint(const Scene& s) {
+  std::uint64_t h = 0;
+  hashValue(h, s.bodies.size());
+  for (const ElementType& t : s.elementTypes)
+    for (double v : {t.thickness, t.width, t.radius, t.length, t.mass}) hashValue(h, v);
+  for (int i = 0; i < s.bodies.size(); ++i) hashValue(h, s.bodies.type[i]);
+  hashValue(h, s.bonds.size());
+  for (const Bond& bd : s.bonds) hashValue(h, bd.a), hashValue(h, bd.b), hashValue(h, bd.k.kn), hashValue(h, bd.k.ks);
+  return h;
+}
+}  // namespace
+
+void writeFinalState(const std::string& path, const Scene& scene, const Simulation& sim) {
+  writeCheckpoint(
+      path, scene, sim,
+      [&](BinaryWriter& out) {
+        out.write(std::string(kFinalStateTag));
+        out.write(elementsFingerprint(scene));
+      },
+      {});
+}
+
+FinalState readFinalState(const std::string& path, const Scene& scene) {
+  const CheckpointFile file(path, scene, false);
+  BinaryReader pre = file.prelude();
+  // A run's checkpoint starts its prelude with the stage index (8 bytes), never this string.
+  if (pre.remaining() < 8 + std::string(kFinalStateTag).size() || pre.read<std::string>() != kFinalStateTag)
+    pre.fail("a run's checkpoint, not the final state of a completed run (written by [output] final_state)");
+  if (pre.read<std::uint64_t>() != elementsFingerprint(scene))
+    pre.fail("the final state of another film (its elements, their types or its bonds differ from this scene's)");
+  FinalState f;
+  BinaryReader in = file.state();
+  f.step = in.read<std::int64_t>();
+  f.time = in.read<double>();
+  f.timeStep = in.read<double>();
+  f.bodies = scene.bodies;
+  readBodiesFrom(in, f.bodies);
+  in.read<std::int64_t>();  // cycle start, held outer forces: a started run rebuilds them
+  in.readVector<Vec3>("held outer forces");
+  in.readVector<Vec3>("held outer torques");
+  const auto n = in.read<std::uint64_t>();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    std::string name = in.read<std::string>();
+    f.effects.emplace_back(std::move(name), in.readVector<unsigned char>("effect state"));
+  }
+  return f;
 }
 
 std::string writingBuild(const std::string& commit) {

@@ -43,12 +43,15 @@ void writeCheckpoint(const std::string& path, const Scene& scene, const Simulati
 // the prelude first, then restore() into a simulation rebuilt from it, then the tail.
 class CheckpointFile {
  public:
-  CheckpointFile(const std::string& path, const Scene& scene);
+  // sameScene = false: the fingerprint is not checked (a final-state file read by another scene:
+  // readFinalState checks what must match).
+  CheckpointFile(const std::string& path, const Scene& scene, bool sameScene = true);
   BinaryReader prelude() const { return section(prelude_); }
   // Step, time, every element's state and each effect's; the simulation's time step must be
   // the checkpoint's.
   void restore(Simulation& sim) const;
   BinaryReader tail() const { return section(tail_); }
+  BinaryReader state() const { return section(state_); }
   // The commit of the build that wrote it (common/build_info.hpp); empty for format 2. Only
   // the same build continues a run bit for bit as the uninterrupted run would have.
   const std::string& writtenBy() const { return writtenBy_; }
@@ -67,6 +70,22 @@ class CheckpointFile {
 std::string resumedBuildNote(const std::string& commit);
 // "mesochain commit X", or what a format-2 checkpoint's empty commit means.
 std::string writingBuild(const std::string& commit);
+
+// The state a completed run ends in ([output] final_state), for another scene's [run] start_from:
+// the step and time, every element's state and each effect's evolving state by name. The file
+// is a checkpoint whose prelude marks it as a final state and identifies the elements it holds
+// (count, types, element types, bonds); written atomically.
+struct FinalState {
+  long step = 0;
+  double time = 0.0;     // ns
+  double timeStep = 0.0; // ns, of the run that wrote it
+  Bodies bodies;
+  std::vector<std::pair<std::string, std::vector<unsigned char>>> effects;  // name, saveState bytes
+};
+void writeFinalState(const std::string& path, const Scene& scene, const Simulation& sim);
+// Reads `path` for `scene`, whose elements must be those of the run that wrote it (InputError
+// naming the file otherwise: not a final-state file, another film, corrupt or truncated).
+FinalState readFinalState(const std::string& path, const Scene& scene);
 
 // Every per-element array of `b` (not types, masses, inertia: those come from the scene).
 void writeBodiesTo(BinaryWriter& out, const Bodies& b);

@@ -56,14 +56,25 @@ std::vector<StageSpec> stagesOf(const Scene& s) {
 }
 
 // The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
-// extra effects and, for a tensile stage, its grips chosen from those positions.
+// extra effects and, for a tensile stage, its grips chosen from those positions (a scene without
+// [[stages]] has its grips from loadScene, unless it starts from another run's final state).
 Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, const Bodies& bodies, double time,
                  bool implicit) {
   Scene s = base;
   s.bodies = bodies;
   s.effects.insert(s.effects.end(), stage.addEffects.begin(), stage.addEffects.end());
   if (stage.massScale > 0.0) s.run.massScale = stage.massScale;
-  if (!implicit) {
+  if (implicit && !base.run.startFrom.empty() && s.tensile.enabled) {
+    // loadScene gripped the film as built: its grips (the only constraints of grip elements)
+    // give way to those of the state the run starts from.
+    const auto gripped = [&](const FixedDofs& f) {
+      return std::count(s.tensile.leftGrip.begin(), s.tensile.leftGrip.end(), f.element) +
+                 std::count(s.tensile.rightGrip.begin(), s.tensile.rightGrip.end(), f.element) > 0;
+    };
+    s.boundary.fixed.erase(std::remove_if(s.boundary.fixed.begin(), s.boundary.fixed.end(), gripped), s.boundary.fixed.end());
+    s.tensile.startTime = time;
+    setUpTensile(s);
+  } else if (!implicit) {
     s.tensile = stage.tensile;
     if (s.tensile.enabled) {
       s.tensile.startTime = time;
@@ -315,6 +326,10 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                        "output folder (-o)");
     if (hasCheckpoint) fs::remove(checkpointPath, ec), r.removedStale.push_back(checkpointPath);
   }
+  // [run] start_from: the first stage starts where another run ended (a resumed run has it in
+  // its checkpoint). The steps it had done count toward neither the progress nor this run's.
+  std::optional<FinalState> startState;
+  if (!resumed && !scene.run.startFrom.empty()) startState = readFinalState(scene.run.startFrom, scene);
 
   // Where to start: stage 0 at the scene's state, or the checkpoint's stage.
   std::int64_t stageIndex = 0;
@@ -325,7 +340,18 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   if (resumed) {
     StageStart start = readStageStart(*resumed, scene, stages.size());
     stageIndex = start.index, stageTime = start.time, stageStep = start.step, stageBodies = std::move(start.bodies);
+  } else if (startState) {
+    stageTime = startState->time, stageStep = startState->step, stageBodies = startState->bodies;
   }
+  // The step the run started at (the progress fraction counts from it): a resumed run that started
+  // from a final state reads that file's step again; if it is gone or changed, the progress
+  // display counts from 0 (only the display: the run's state is all in the checkpoint).
+  long baseStep = startState ? startState->step : 0;
+  if (resumed && !scene.run.startFrom.empty()) try {
+      baseStep = readFinalState(scene.run.startFrom, scene).step;
+    } catch (const InputError&) {
+    }
+  r.startStep = baseStep;
   BinaryReader tail = resumed ? resumed->tail() : BinaryReader(nullptr, 0, checkpointPath);
   if (resumed) xyzBytes = tail.read<std::int64_t>(), frame = tail.read<std::int64_t>();
   // Frames of an earlier (longer) run, or written after the checkpoint, would mix with this run's.
@@ -392,11 +418,20 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       r.resumedFromStep = sim.stepCount();
       r.resumedFromCommit = resumed->writtenBy();
       if (options.resumedFrom) options.resumedFrom(r.resumedFromCommit);
-      if (options.resumedAt) options.resumedAt(std::min(1.0, static_cast<double>(sim.stepCount()) / totalSteps));
+      if (options.resumedAt) options.resumedAt(std::min(1.0, static_cast<double>(sim.stepCount() - baseStep) / totalSteps));
       run->open(&tail);
     } else {
       if (previous) {
         carryEffectStates(previous->sim(), sim);
+        sim.refreshForces();
+      } else if (startState) {
+        // As a stage transition: each effect of the same name continues its state.
+        for (const EffectPtr& e : sim.effects())
+          for (const auto& [name, bytes] : startState->effects)
+            if (name == e->name()) {
+              BinaryReader in(bytes.data(), bytes.size(), scene.run.startFrom);
+              e->loadState(in);
+            }
         sim.refreshForces();
       }
       run->open(nullptr);
@@ -474,7 +509,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       }
       if (progress && (k % every == 0 || last)) {
         if (options.status) options.status(run->status());
-        progress(std::min(1.0, static_cast<double>(k) / totalSteps));
+        progress(std::min(1.0, static_cast<double>(k - baseStep) / totalSteps));
       }
       const double outputSeconds = std::chrono::duration<double>(Clock::now() - outputs).count();
       r.wallSeconds += outputSeconds, performance.wallSeconds += outputSeconds;
@@ -506,6 +541,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       r.tensile = true, r.finalStrain = st.finalStrain, r.finalStress = st.finalStress;
       r.peakStress = st.peakStress, r.initialStress = st.initialStress;
     }
+  if (!o.finalState.empty()) writeFinalState(prepare(o.finalState), scene, sim);
   fs::remove(checkpointPath, ec);  // the run is complete: nothing to resume
   return r;
 }

@@ -88,6 +88,7 @@ struct RunSummary {
   bool interrupted = false;      // RunOptions::interruptAfter reached, or stopped on request
   bool stoppedOnRequest = false; // RunOptions::stopRequested: the checkpoint was written
   long resumedFromStep = -1;     // >= 0: resumed from a checkpoint at this step
+  long startStep = 0;            // [run] start_from: the step of the final state it started from
   // Resumed: the commit of the build that wrote the checkpoint ("" for a format-2 checkpoint).
   std::string resumedFromCommit;
   long checkpoints = 0;          // written by this invocation

@@ -54,6 +54,10 @@ struct RunControl {
   double stopKineticEnergy = -1.0;    // zJ; stop when the total kinetic energy falls below (< 0: off)
   long checkEvery = 100;              // steps between stop checks
   long minimumSteps = 0;              // no stop before this step
+  // A final-state file of another run ([output] final_state, absolute or relative to the scene
+  // file when read): the run starts from its elements, time, step and effect states instead of
+  // the scene's own state, as the next stage of that run would ("" = the scene's state).
+  std::string startFrom;
 };
 
 // The steps of a run or stage of `durationNs` at time step h: the fewest steps whose time reaches
@@ -74,6 +78,9 @@ struct OutputSpec {
   long checkpointEvery = 0;
   double checkpointMinutes = 30.0;
   std::string checkpoint = "checkpoint.mdem";
+  // The state the run ends in, for another scene's [run] start_from (file name in the output
+  // folder; "" = none): written atomically once the last stage is done.
+  std::string finalState;
 };
 
 // [tensile]: uniaxial tensile test with grips (mdem/tensile.hpp, docs/scene-file.md).

@@ -261,7 +261,7 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   const TomlTable run = root.requireTable("run");
   run.allowOnly({"time_step_ns", "time_step_fraction", "steps", "duration_ns", "stop_kinetic_energy_zJ",
                  "check_every", "minimum_steps", "outer_step_ratio", "outer_step_fraction", "outer_effects",
-                 "rotational_inertia_scale", "mass_scale", "critical_step"});
+                 "rotational_inertia_scale", "mass_scale", "critical_step", "start_from"});
   if (run.has("time_step_ns") == run.has("time_step_fraction"))
     run.fail("time_step_ns", run.has("time_step_ns") ? "both time_step_ns and time_step_fraction" : "neither",
              "exactly one of time_step_ns, time_step_fraction");
@@ -294,10 +294,19 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   s.run.checkEvery = run.integerOr("check_every", 100);
   if (s.run.checkEvery < 1) run.fail("check_every", std::to_string(s.run.checkEvery), "at least 1");
   s.run.minimumSteps = run.integerOr("minimum_steps", 0);
+  if (run.has("start_from")) {
+    std::filesystem::path from = run.string("start_from");
+    if (from.is_relative()) from = std::filesystem::path(s.source).parent_path() / from;
+    if (!std::filesystem::is_regular_file(from))
+      run.fail("start_from", "\"" + from.string() + "\", which does not exist",
+               "the final-state file of another run ([output] final_state)");
+    s.run.startFrom = from.string();
+  }
   if (!root.has("output")) return;
   const TomlTable out = root.requireTable("output");
   out.allowOnly({"directory", "energies_csv", "energies_every", "xyz", "vtk_prefix",
-                 "frames_every", "probes", "plot_png", "checkpoint", "checkpoint_every", "checkpoint_minutes"});
+                 "frames_every", "probes", "plot_png", "checkpoint", "checkpoint_every", "checkpoint_minutes",
+                 "final_state"});
   s.output.directory = out.stringOr("directory", ".");
   s.output.energiesCsv = out.stringOr("energies_csv", "");
   s.output.energiesEvery = out.integerOr("energies_every", 100);
@@ -312,6 +321,9 @@ void readRunAndOutput(const TomlTable& root, Scene& s) {
   s.output.checkpointEvery = out.integerOr("checkpoint_every", 0);
   if (s.output.checkpointEvery < 0) out.fail("checkpoint_every", std::to_string(s.output.checkpointEvery), "a number of steps >= 0 (0: not by steps)");
   s.output.checkpointMinutes = out.nonNegativeOr("checkpoint_minutes", s.output.checkpointMinutes);
+  s.output.finalState = out.stringOr("final_state", "");
+  if (out.has("final_state") && (s.output.finalState.empty() || s.output.finalState == s.output.checkpoint))
+    out.fail("final_state", "\"" + s.output.finalState + "\"", "a file name other than the checkpoint's");
   if (out.has("probes"))
     for (long p : out.integers("probes"))
       s.output.probes.push_back(elementIndex(p, s.bodies.size(), out, "probes"));

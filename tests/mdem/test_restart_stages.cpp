@@ -77,6 +77,89 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
 }
 
+// A relax stage then a tensile stage in one scene equals two scenes joined by a final state: the
+// relax alone writing [output] final_state, the pull alone starting from it ([run] start_from),
+// bit for bit; the second scene also resumes from a kill. What is not a final state of this
+// film is a clear error naming the file.
+TEST_F(Restart, RelaxThenPullEqualsTwoScenesJoinedByTheFinalState) {
+  const std::string staged = stagedScene(90, 110);
+  std::ofstream(scenePath_) << staged;
+  const RunSummary reference = run("staged");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  const std::size_t second = staged.rfind("[[stages]]");
+  const std::size_t first = staged.find("[[stages]]");
+  auto write = [&](const std::string& name, std::string text) {
+    std::ofstream((dir_ / name).string()) << text;
+    return (dir_ / name).string();
+  };
+  std::string relax = staged.substr(0, second);
+  relax.replace(relax.find("[output]\n"), 9, "[output]\nfinal_state = \"relaxed.mdem\"\n");
+  const std::string relaxScene = write("relax.toml", relax);
+  std::string pull = staged.substr(0, first) + staged.substr(second);
+  pull.replace(pull.find("[run]\n"), 6, "[run]\nstart_from = \"relax/relaxed.mdem\"\n");
+  pull.replace(pull.find("[local_damping]\nalpha = 0.3\n"), 27, "");  // named by the relax stage only
+  const std::string pullScene = write("pull.toml", pull);
+
+  const RunSummary relaxed = runScene(loadScene(relaxScene), (dir_ / "relax").string(), nullptr);
+  ASSERT_TRUE(fs::exists(dir_ / "relax" / "relaxed.mdem"));
+  EXPECT_FALSE(fs::exists(dir_ / "relax" / "checkpoint.mdem"));  // the run is complete
+  EXPECT_EQ(relaxed.steps, 90);
+  const RunSummary pulled = runScene(loadScene(pullScene), (dir_ / "pull").string(), nullptr);
+  EXPECT_EQ(pulled.startStep, 90);
+  EXPECT_EQ(pulled.steps, reference.steps);
+  EXPECT_EQ(pulled.time, reference.time);
+  for (const char* f : {"pull-energies.csv", "pull-tensile.csv", "pull-tensile.json"})
+    EXPECT_EQ(slurp(dir_ / "pull" / f), slurp(dir_ / "staged" / f)) << f;
+  EXPECT_EQ(pulled.finalEnergies.total(), reference.finalEnergies.total());
+  EXPECT_EQ(pulled.stages.back().peakStress, reference.stages.back().peakStress);
+
+  // The second scene killed inside its pull and resumed: the same outputs.
+  RunOptions kill;
+  kill.interruptAfter = 150;
+  ASSERT_TRUE(runScene(loadScene(pullScene), (dir_ / "pull-killed").string(), nullptr, kill).interrupted);
+  RunOptions resume;
+  resume.resume = true;
+  const RunSummary resumed = runScene(loadScene(pullScene), (dir_ / "pull-killed").string(), nullptr, resume);
+  EXPECT_EQ(resumed.startStep, 90);
+  for (const char* f : {"pull-energies.csv", "pull-tensile.csv", "pull-tensile.json"})
+    EXPECT_EQ(slurp(dir_ / "pull-killed" / f), slurp(dir_ / "staged" / f)) << f;
+
+  // A scene without [[stages]] ([run] steps, [tensile]) chooses its grips where it starts: its
+  // strain starts at 0 in the relaxed film (loadScene's grips, on the film as generated, would not).
+  std::string single = sceneText(40, 0);
+  single.replace(single.find("[run]\n"), 6, "[run]\nstart_from = \"relax/relaxed.mdem\"\n");
+  const RunSummary direct = runScene(loadScene(write("single.toml", single)), (dir_ / "single").string(), nullptr);
+  EXPECT_EQ(direct.steps, 130);
+  std::ifstream csv(dir_ / "single" / "tensile.csv");
+  std::string header, row;
+  std::getline(csv, header), std::getline(csv, row);
+  EXPECT_EQ(row.substr(0, row.find(',', row.find(',') + 1) + 1), fmt::format("{:.10g},0,", reference.stages[0].time)) << row;
+
+  // Not a final state: a run's checkpoint (of the killed relax), and the final state of another film.
+  kill.interruptAfter = 40;
+  ASSERT_TRUE(runScene(loadScene(relaxScene), (dir_ / "relax-killed").string(), nullptr, kill).interrupted);
+  std::string otherFilm = relax;
+  otherFilm.replace(otherFilm.find("seed = 3"), 8, "seed = 4");
+  runScene(loadScene(write("other.toml", otherFilm)), (dir_ / "other").string(), nullptr);
+  for (const auto& [from, says] : {std::pair<std::string, std::string>{"relax-killed/checkpoint.mdem", "not the final state"},
+                                   {"other/relaxed.mdem", "another film"}}) {
+    std::string text = pull;
+    text.replace(text.find("relax/relaxed.mdem"), 18, from);
+    const Scene s = loadScene(write("bad.toml", text));
+    try {
+      runScene(s, (dir_ / "bad").string(), nullptr);
+      ADD_FAILURE() << from << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(from), std::string::npos) << e.what();
+    }
+  }
+  // A start_from file that does not exist is an error of the scene file naming the key.
+  std::string missing = pull;
+  missing.replace(missing.find("relax/relaxed.mdem"), 18, "relax/none.mdem");
+  expectSceneError(missing, "run.start_from");
+}
+
 // The performance record (RunSummary::performance, `mesochain dem`'s "performance" lines): one
 // entry per stage an invocation advanced, with the steps it advanced there, so that a resumed run
 // reports the steps since its resume and a killed one the stage it was in.
