@@ -326,6 +326,13 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                        "output folder (-o)");
     if (hasCheckpoint) fs::remove(checkpointPath, ec), r.removedStale.push_back(checkpointPath);
   }
+  // A kill during an atomic write leaves its temporary file (NAME.tmp.PID, common/atomic_file.cpp)
+  // beside the finished file it would have replaced: the next run into the folder removes it.
+  static const std::regex temporary(R"(.+\.tmp\.[0-9]+)");
+  std::vector<fs::path> leftovers;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+    if (it->is_regular_file(ec) && std::regex_match(it->path().filename().string(), temporary)) leftovers.push_back(it->path());
+  for (const fs::path& p : leftovers) fs::remove(p, ec), r.removedStale.push_back(p.string());
   // [run] start_from: the first stage starts where another run ended (a resumed run has it in
   // its checkpoint). The steps it had done count toward neither the progress nor this run's.
   std::optional<FinalState> startState;

@@ -5,6 +5,7 @@
 // state is the run's; corrupt, truncated or foreign checkpoints are clear errors; a fresh run
 // into a folder with an interrupted run is refused. Stages, profiles and compression cycles:
 // test_restart_stages.cpp.
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <random>
@@ -255,6 +256,26 @@ TEST_F(Restart, FreshRunIntoAnInterruptedRunsFolderIsRefused) {
   EXPECT_FALSE(shorter.removedStale.empty());
   EXPECT_FALSE(fs::exists(dir_ / "out" / "frames" / "f_000004.vtk"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "frames" / "f_000002.vtk"));
+}
+
+// A kill inside an atomic write leaves the temporary file (NAME.tmp.PID) beside the finished
+// one; the next run into the folder, resumed or fresh, removes it and says so.
+TEST_F(Restart, TemporaryFilesOfAKilledWriteAreRemovedByTheNextRun) {
+  RunOptions kill;
+  kill.interruptAfter = kEvery + 1;
+  run("out", kill);
+  const fs::path leftovers[] = {dir_ / "out" / "checkpoint.mdem.tmp.4242", dir_ / "out" / "frames" / "f.pvd.tmp.17"};
+  for (const fs::path& p : leftovers) std::ofstream(p) << "half";
+  std::ofstream(dir_ / "out" / "notes.tmp.txt") << "the user's";  // not a temporary file's name
+  RunOptions resume;
+  resume.resume = true;
+  const RunSummary r = run("out", resume);
+  for (const fs::path& p : leftovers) {
+    EXPECT_FALSE(fs::exists(p)) << p;
+    EXPECT_NE(std::find(r.removedStale.begin(), r.removedStale.end(), p.string()), r.removedStale.end()) << p;
+  }
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "notes.tmp.txt"));
+  EXPECT_EQ(r.steps, kSteps);
 }
 
 }  // namespace

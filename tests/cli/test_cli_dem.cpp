@@ -1,0 +1,71 @@
+// `mesochain dem` killed for real (SIGKILL, at moments spread over its run) and continued with
+// --resume: the outputs end byte for byte as those of an uninterrupted run. The in-process
+// restart tests (tests/mdem/test_restart*.cpp) stop a run at a step boundary; this one kills the
+// process wherever it is, also while it writes a CSV row, an XYZ or VTK frame, a checkpoint or
+// the final JSON and plots (docs/scene-file.md, "Restart").
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mesochain::testing::runMesochain;
+using mesochain::testing::slurp;
+
+TEST(CliDem, KilledAtAnyMomentResumesToTheUninterruptedOutputs) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-dem-kill-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // The tensile example, longer, with a checkpoint every 2000 steps and VTK frames.
+  const std::string args = fmt::format(
+      "dem {}/examples/network-tensile.toml --set run.steps=60000 --set output.checkpoint_every=2000 "
+      "--set output.checkpoint_minutes=0 --set output.vtk_prefix=frames/f --set output.frames_every=2500",
+      MESOCHAIN_SOURCE_DIR);
+  std::string out;
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(runMesochain(args + " -o whole", dir, out), 0) << out;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // Each run continues the previous one's checkpoint when there is one (a kill before the first
+  // checkpoint leaves none: the run starts afresh), and is killed after a share of the whole
+  // run's time; their logs are appended.
+  const std::string run = fmt::format(
+      "cd {} && (if [ -f killed/checkpoint.mdem ]; then R=--resume; else R=--overwrite; fi; "
+      "OMP_NUM_THREADS=2 CI=true {} {} -o killed $R >> killed.log 2>&1 & pid=$!; ",
+      dir.string(), MESOCHAIN_BINARY, args);
+  int interrupted = 0;
+  for (const double share : {0.1, 0.25, 0.15, 0.4, 0.3, 0.55, 0.2, 0.45}) {
+    std::system(fmt::format("{}sleep {:.3f}; kill -9 $pid 2>/dev/null; wait $pid) > /dev/null 2>&1", run, share * seconds)
+                    .c_str());
+    if (!fs::exists(dir / "killed" / "tensile.json")) ++interrupted;
+  }
+  EXPECT_GE(interrupted, 4) << "the kills came after the run had finished: nothing was tested";
+  // Finish it.
+  std::system(fmt::format("{}wait $pid) > /dev/null 2>&1", run).c_str());
+  const std::string log = slurp(dir / "killed.log");
+  EXPECT_NE(log.find("resumed from the checkpoint at step"), std::string::npos) << log;
+  ASSERT_TRUE(fs::exists(dir / "killed" / "tensile.json")) << log;
+  EXPECT_FALSE(fs::exists(dir / "killed" / "checkpoint.mdem"));  // a finished run removes it
+  for (const char* f : {"energies.csv", "tensile.csv", "tensile.json", "trajectory.xyz", "film.json", "frames/f.pvd",
+                        "frames/f_000000.vtk", "frames/f_000011.vtk", "frames/f_000024.vtk"})
+    EXPECT_EQ(slurp(dir / "killed" / f), slurp(dir / "whole" / f)) << f;
+  std::size_t framesWhole = 0, framesKilled = 0;
+  for (const auto& e : fs::directory_iterator(dir / "whole" / "frames")) framesWhole += e.is_regular_file();
+  for (const auto& e : fs::directory_iterator(dir / "killed" / "frames")) framesKilled += e.is_regular_file();
+  EXPECT_EQ(framesKilled, framesWhole);
+  // No temporary file of an interrupted atomic write is left behind.
+  for (const auto& e : fs::recursive_directory_iterator(dir / "killed"))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  fs::remove_all(dir);
+}
+
+}  // namespace
