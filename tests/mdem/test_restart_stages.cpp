@@ -2,9 +2,13 @@
 // given as durations and compression cycles resume bit for bit from a checkpoint at any step;
 // stage errors name their key; --profile names every effect's phases. The fixture:
 // restart_fixture.hpp.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -158,6 +162,58 @@ TEST_F(Restart, RelaxThenPullEqualsTwoScenesJoinedByTheFinalState) {
   std::string missing = pull;
   missing.replace(missing.find("relax/relaxed.mdem"), 18, "relax/none.mdem");
   expectSceneError(missing, "run.start_from");
+}
+
+// A relax stage that stops once the kinetic energy is below a threshold ([[stages]]
+// stop_kinetic_energy_zJ, check_every, minimum_steps) stops at the first check, at or after its
+// minimum steps, where the energy of the same run without the criterion (its relax-energies.csv,
+// a row every 20 steps) is below the threshold; the pull then starts there, and a run killed
+// just before or after that stop resumes to the same outputs.
+TEST_F(Restart, RelaxStopsAtTheKineticEnergyAndResumesAcrossTheStop) {
+  std::ofstream(scenePath_) << stagedScene(1000, 60);
+  run("fixed");
+  std::ifstream csv(dir_ / "fixed" / "relax-energies.csv");
+  std::string line;
+  std::getline(csv, line);
+  ASSERT_EQ(line.rfind("step,time_ns,kinetic_translational_zJ,kinetic_rotational_zJ,", 0), 0u) << line;
+  std::vector<std::pair<long, double>> kinetic;  // step, total kinetic energy (zJ)
+  while (std::getline(csv, line)) {
+    std::istringstream row(line);
+    std::string step, time, translational, rotational;
+    std::getline(row, step, ','), std::getline(row, time, ','), std::getline(row, translational, ','),
+        std::getline(row, rotational, ',');
+    kinetic.emplace_back(std::stol(step), std::stod(translational) + std::stod(rotational));
+  }
+  ASSERT_GE(kinetic.size(), 15u);
+  // The film zips (its kinetic energy rises to a first peak near step 360, then varies): from
+  // step 400 on, a threshold just above the energy at step 720 is first undercut at some check
+  // at or before 720.
+  const long minimum = 400;
+  double threshold = 0.0;
+  for (const auto& [step, e] : kinetic)
+    if (step == 720) threshold = e * (1.0 + 1e-6);
+  ASSERT_GT(threshold, 0.0);
+  long expected = -1;
+  for (const auto& [step, e] : kinetic)
+    if (step >= minimum && e < threshold) {
+      expected = step;
+      break;
+    }
+  ASSERT_GT(expected, 0);
+  std::printf("the relax stops at step %ld (threshold %.6g zJ)\n", expected, threshold);
+  EXPECT_GT(expected, minimum);  // the threshold, not the minimum, decides
+  std::string text = stagedScene(1000, 60);
+  text.replace(text.find("steps = 1000\n"), 13,
+               fmt::format("steps = 1000\nstop_kinetic_energy_zJ = {:.17g}\ncheck_every = 20\nminimum_steps = {}\n",
+                           threshold, minimum));
+  std::ofstream(scenePath_) << text;
+  const RunSummary reference = run("reference");
+  ASSERT_EQ(reference.stages.size(), 2u);
+  EXPECT_TRUE(reference.stages[0].stoppedByCriterion);
+  EXPECT_EQ(reference.stages[0].steps, expected);
+  EXPECT_EQ(reference.stages[1].steps, 60);
+  EXPECT_EQ(reference.steps, expected + 60);
+  expectStagedResumesMatch(reference, {expected - 7, expected, expected + 5});
 }
 
 // The performance record (RunSummary::performance, `mesochain dem`'s "performance" lines): one
