@@ -98,6 +98,12 @@ Command makeDemCommand() {
     // Made and checked before the run, not found unwritable at the first output.
     prepareOutputFolder(dir, opt->outputDir.empty() ? opt->scene : "<command line>",
                         opt->outputDir.empty() ? "key output.directory" : "option --output-dir");
+    if (opt->resume && opt->overwrite)
+      throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
+    mdem::RunOptions options;
+    options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
+    // Refused (an interrupted run there, or nothing to resume) before anything is written.
+    mdem::checkRunFolder(scene, dir, options);
     // A generated film ([network]): its report, printed and written as film.json before the run.
     std::optional<mdem::FilmStatistics> film;
     if (!scene.filmSize.isZero()) {
@@ -114,13 +120,14 @@ Command makeDemCommand() {
     const std::function<void(double)> progress = [&bar, &status](double fraction) {
       bar.update(static_cast<int>(std::lround(fraction * 100)), status);
     };
-    if (opt->resume && opt->overwrite)
-      throw InputError("<command line>", "options --resume and --overwrite", "both", "at most one of them");
-    mdem::RunOptions options;
-    options.resume = opt->resume, options.overwrite = opt->overwrite, options.profile = opt->profile;
     // The steps done before a resume are not timed here: the ETA extrapolates those run since.
     options.resumedAt = [&bar](double fraction) { bar.skip(static_cast<int>(std::lround(fraction * 100))); };
     options.status = [&status](const std::string& line) { status = line; };
+    options.removed = [&dir](const std::vector<std::string>& files) {
+      std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", files.size(), dir,
+                               files.front())
+                << std::flush;
+    };
     options.resumedFrom = [](const std::string& commit) {
       if (const std::string note = mdem::resumedBuildNote(commit); !note.empty()) std::cerr << note << "\n";
     };
@@ -142,9 +149,6 @@ Command makeDemCommand() {
       if (opt->profile) printProfile(r, scene.bodies.size());
       return kStoppedAsAsked;
     }
-    if (!r.removedStale.empty())
-      std::cout << fmt::format("removed {} output file(s) of an earlier run in {} (e.g. {})\n", r.removedStale.size(), dir,
-                               r.removedStale.front());
     if (!scene.run.startFrom.empty() && r.resumedFromStep < 0)
       std::cout << fmt::format("started from the final state {} (step {})\n", scene.run.startFrom, r.startStep);
     if (r.resumedFromStep >= 0)

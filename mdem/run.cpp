@@ -283,6 +283,37 @@ CheckpointState readCheckpointState(const Scene& scene, const std::string& check
   return out;
 }
 
+std::vector<std::string> outputNames(const Scene& scene) {
+  const OutputSpec& o = scene.output;
+  std::vector<std::string> names;
+  const auto add = [&names](const std::string& n) {
+    if (!n.empty() && std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  };
+  add(o.xyz), add(o.finalState);
+  if (!o.vtkPrefix.empty()) add(o.vtkPrefix + ".pvd");
+  for (const StageSpec& st : stagesOf(scene)) {
+    add(st.energiesCsv), add(st.plotPng);
+    if (st.tensileStage) add(st.tensile.csv), add(st.tensile.json), add(st.tensile.png);
+    if (st.compression.enabled) add(st.compression.csv), add(st.compression.cyclesCsv), add(st.compression.png);
+    if (!st.tensileStage && !scene.filmSize.isZero() && !scene.stages.empty()) add(st.name + "-film.json");
+  }
+  return names;
+}
+
+void checkRunFolder(const Scene& scene, const std::string& outputDirectory, const RunOptions& options) {
+  const fs::path checkpoint = fs::path(outputDirectory) / scene.output.checkpoint;
+  std::error_code ec;
+  const bool hasCheckpoint = fs::exists(checkpoint, ec);
+  if (options.resume && !hasCheckpoint)
+    throw InputError(checkpoint.string(), "", "no checkpoint (the run finished, or never wrote one)",
+                     "the checkpoint of an interrupted run of this scene to resume");
+  if (!options.resume && hasCheckpoint && !options.overwrite)
+    throw InputError(checkpoint.string(), "",
+                     "the checkpoint of an interrupted run in the output folder " + outputDirectory,
+                     "--resume to continue it, --overwrite to start afresh and replace its outputs, or another "
+                     "output folder (-o)");
+}
+
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
                     const std::function<void(double)>& progress, const RunOptions& options) {
   const OutputSpec& o = scene.output;
@@ -311,20 +342,18 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   RunSummary r;
 
   // Resume, or start afresh in a folder without an interrupted run (or with --overwrite).
+  checkRunFolder(scene, outputDirectory, options);
   std::unique_ptr<CheckpointFile> resumed;
-  const bool hasCheckpoint = fs::exists(checkpointPath);
   if (options.resume) {
-    if (!hasCheckpoint)
-      throw InputError(checkpointPath, "", "no checkpoint (the run finished, or never wrote one)",
-                       "the checkpoint of an interrupted run of this scene to resume");
     resumed = std::make_unique<CheckpointFile>(checkpointPath, scene);
   } else {
-    if (hasCheckpoint && !options.overwrite)
-      throw InputError(checkpointPath, "",
-                       "the checkpoint of an interrupted run in the output folder " + dir.string(),
-                       "--resume to continue it, --overwrite to start afresh and replace its outputs, or another "
-                       "output folder (-o)");
-    if (hasCheckpoint) fs::remove(checkpointPath, ec), r.removedStale.push_back(checkpointPath);
+    // A fresh run replaces what a run of this scene writes, the interrupted run's checkpoint
+    // (--overwrite) included: nothing an earlier run left may pass for this run's result.
+    for (const std::string& name : outputNames(scene)) {
+      const fs::path p = dir / name;
+      if (fs::is_regular_file(p, ec)) fs::remove(p, ec), r.removedStale.push_back(p.string());
+    }
+    if (fs::exists(checkpointPath, ec)) fs::remove(checkpointPath, ec), r.removedStale.push_back(checkpointPath);
   }
   // A kill during an atomic write leaves its temporary file (NAME.tmp.PID, common/atomic_file.cpp)
   // beside the finished file it would have replaced: the next run into the folder removes it.
@@ -371,6 +400,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       const fs::path json = dir / stages[k].tensile.json;
       if (fs::exists(json, ec)) fs::remove(json, ec), r.removedStale.push_back(json.string());
     }
+  if (options.removed && !r.removedStale.empty()) options.removed(r.removedStale);
   std::unique_ptr<AppendFile> xyz;
   if (!o.xyz.empty()) xyz = std::make_unique<AppendFile>(prepare(o.xyz), xyzBytes);
   std::unique_ptr<VtkSeries> series;

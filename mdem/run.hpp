@@ -42,6 +42,9 @@ struct RunOptions {
   // Called before each `progress` report with one line on where the run is (the stage, its
   // time, and the last tensile or compression sample), for the progress display's note.
   std::function<void(const std::string&)> status;
+  // Called once, before the first step, with the files of an earlier run the run has removed
+  // (RunSummary::removedStale), so that the message comes before hours of stepping.
+  std::function<void(const std::vector<std::string>&)> removed;
 };
 
 struct StageSummary {
@@ -122,6 +125,16 @@ struct CheckpointState {
   std::int64_t stage = 0;
 };
 CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath);
+
+// The files a run of `scene` writes into its output folder (relative names; the checkpoint and
+// the numbered VTK frames aside): a fresh run removes those an earlier run left there.
+std::vector<std::string> outputNames(const Scene& scene);
+
+// Throws the InputError a run into `outputDirectory` with `options` meets before it writes
+// anything: --resume without a checkpoint there, or a fresh run (without --overwrite) into a
+// folder that holds an interrupted run's checkpoint. For callers that write into the folder
+// before runScene (mesochain dem's film.json).
+void checkRunFolder(const Scene& scene, const std::string& outputDirectory, const RunOptions& options);
 
 // Progress callback receives the fraction of the maximum step count done.
 RunSummary runScene(const Scene& scene, const std::string& outputDirectory,

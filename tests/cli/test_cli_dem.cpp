@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -65,6 +66,22 @@ TEST(CliDem, KilledAtAnyMomentResumesToTheUninterruptedOutputs) {
   // No temporary file of an interrupted atomic write is left behind.
   for (const auto& e : fs::recursive_directory_iterator(dir / "killed"))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  fs::remove_all(dir);
+}
+
+// A fresh run into a folder holding an interrupted run's checkpoint is refused before it writes
+// anything (not even the film report), with what to do instead; the earlier run's files stay.
+TEST(CliDem, RefusedRunWritesNothing) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-dem-refused-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "checkpoint.mdem") << "an interrupted run's";
+  std::ofstream(dir / "out" / "energies.csv") << "its rows";
+  std::string out;
+  EXPECT_NE(runMesochain(fmt::format("dem {}/examples/network-tensile.toml -o out", MESOCHAIN_SOURCE_DIR), dir, out), 0);
+  EXPECT_NE(out.find("--resume to continue it"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "film.json"));
+  EXPECT_EQ(slurp(dir / "out" / "energies.csv"), "its rows");
   fs::remove_all(dir);
 }
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -256,6 +257,33 @@ TEST_F(Restart, FreshRunIntoAnInterruptedRunsFolderIsRefused) {
   EXPECT_FALSE(shorter.removedStale.empty());
   EXPECT_FALSE(fs::exists(dir_ / "out" / "frames" / "f_000004.vtk"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "frames" / "f_000002.vtk"));
+}
+
+// A fresh rerun into the folder of a finished run removes that run's outputs before its first
+// step, and says so through RunOptions::removed: killed early, it leaves no plot or JSON of the
+// earlier run that would pass for its own result.
+TEST_F(Restart, FreshRerunRemovesTheEarlierRunsOutputsFirst) {
+  run("out");
+  for (const char* f : {"energies.png", "tensile.csv", "energies.csv", "trajectory.xyz", "frames/f.pvd"})
+    ASSERT_TRUE(fs::exists(dir_ / "out" / f)) << f;
+  std::ofstream(dir_ / "out" / "notes.txt") << "the user's";
+  std::vector<std::string> told;
+  int calls = 0;
+  RunOptions kill;
+  kill.interruptAfter = 10;
+  kill.removed = [&](const std::vector<std::string>& files) { told = files, ++calls; };
+  const RunSummary r = run("out", kill);
+  ASSERT_TRUE(r.interrupted);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(told, r.removedStale);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "energies.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "frames" / "f_000004.vtk"));
+  for (const char* f : {"energies.png", "tensile.csv", "energies.csv", "trajectory.xyz"})
+    EXPECT_NE(std::find(told.begin(), told.end(), (dir_ / "out" / f).string()), told.end()) << f;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "notes.txt"));  // not an output of this scene
+  EXPECT_EQ(outputNames(loadScene(scenePath_)),
+            (std::vector<std::string>{"trajectory.xyz", "frames/f.pvd", "energies.csv", "energies.png", "tensile.csv",
+                                      "tensile.json"}));
 }
 
 // A kill inside an atomic write leaves the temporary file (NAME.tmp.PID) beside the finished
