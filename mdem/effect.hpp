@@ -42,6 +42,10 @@ struct State {
   // Multiple time stepping (stepper.hpp): the outer group's force and torque at the last
   // boundary state, per element (empty without the splitting).
   std::vector<Vec3> heldForce, heldTorque;
+  // The velocities and world angular velocities of the time of the last step (between the half
+  // kick that ends it and the one that opens the next, which the stepper fuses), per element;
+  // recorded only when an effect asks (Effect::wantsStepVelocities), for its finish.
+  std::vector<Vec3> stepVelocity, stepAngularVelocity;
 };
 
 // Physical effects model the material; numerical damping (local / viscous) only drives a
@@ -77,6 +81,8 @@ class Effect {
 
   virtual bool hasFinish() const { return false; }
   virtual void finish(const State& /*state*/, double /*time*/) {}
+  // Whether finish reads State::stepVelocity and stepAngularVelocity (the stepper then records them).
+  virtual bool wantsStepVelocities() const { return false; }
 
   // The energies of the current state (stored, or dissipated so far) into the ledger. Called at
   // outputs, not per step.

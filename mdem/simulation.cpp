@@ -47,7 +47,7 @@ std::string describe(const StabilityLimit& l) {
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, double startTime, long startStep)
-    : state_{scene.bodies, startTime, {}, {}},
+    : state_{scene.bodies, startTime, {}, {}, {}, {}},
       kinematics_(scene.boundary, scene.bodies.size()),
       effects_(buildEffects(scene)),
       h_(scene.run.timeStep),

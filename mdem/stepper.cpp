@@ -70,21 +70,33 @@ inline void gatherBlock(State& state, const EffectSequence& fx, const StepPlan& 
   for (int i = lo; i < hi; ++i) km.clearElement(i, force[i], torque[i]);
 }
 
-// Forces of elements [lo, hi) at time t; then close the step and, unless it is the last, open
-// the next one.
-inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& plan, const KinematicMap& km, int lo,
-                        int hi, double t, double h, bool last, double* gatherSeconds = nullptr) {
-  gatherBlock(state, fx, plan, km, lo, hi, t, gatherSeconds);
+// The kicks (and drifts) of finishBlock; `record`: State::stepVelocity gets the velocities of
+// time t, between the two half kicks.
+template <bool record>
+inline void kickBlock(State& state, const KinematicMap& km, int lo, int hi, double t, double h, bool last) {
   Bodies& s = state.bodies;
+  const auto recordAt = [&](int i) {
+    if constexpr (record) state.stepVelocity[i] = s.velocity[i], state.stepAngularVelocity[i] = s.angularVelocityWorld(i);
+  };
+  // closeStep then openStep of a free element: the two half kicks share their force and
+  // orientation, so the increment is formed once and added twice (the same sums, bit for bit, as
+  // two kickElement calls: a run resumed between them gives the same state).
+  const auto kickTwice = [&](int i) {
+    if constexpr (!record) {
+      kickElementTwice(s, i, 0.5 * h);
+    } else {
+      const KickIncrement d = kickIncrement(s, i, 0.5 * h);
+      s.velocity[i] += d.velocity, s.angularMomentumBody[i] += d.angularMomentumBody;
+      recordAt(i);
+      s.velocity[i] += d.velocity, s.angularMomentumBody[i] += d.angularMomentumBody;
+    }
+  };
   for (int i = lo; i < hi; ++i) {
     if (!last && !km.constrained(i)) {
-      // closeStep then openStep of a free element: the two half kicks share their force and
-      // orientation, so the increment is formed once and added twice (the same sums, bit for
-      // bit, as two kickElement calls: a run resumed between them gives the same state).
       // Two free neighbours drift together (driftFreePair: the same results, overlapped).
-      kickElementTwice(s, i, 0.5 * h);
+      kickTwice(i);
       if (i + 1 < hi && !km.constrained(i + 1)) {
-        kickElementTwice(s, i + 1, 0.5 * h);
+        kickTwice(i + 1);
         driftFreePair(s, i, h);
         ++i;
       } else {
@@ -93,8 +105,20 @@ inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& 
       continue;
     }
     closeStep(s, i, t, km, h);
+    recordAt(i);
     if (!last) openStep(s, i, t, km, h);
   }
+}
+
+// Forces of elements [lo, hi) at time t; then close the step and, unless it is the last, open
+// the next one.
+inline void finishBlock(State& state, const EffectSequence& fx, const StepPlan& plan, const KinematicMap& km, int lo,
+                        int hi, double t, double h, bool last, double* gatherSeconds = nullptr) {
+  gatherBlock(state, fx, plan, km, lo, hi, t, gatherSeconds);
+  if (fx.recordsStepVelocities)
+    kickBlock<true>(state, km, lo, hi, t, h, last);
+  else
+    kickBlock<false>(state, km, lo, hi, t, h, last);
 }
 
 // The parallel part of a step at time t, called by every thread of the enclosing parallel
@@ -165,6 +189,7 @@ EffectSequence::EffectSequence(const std::vector<Effect*>& effects, std::vector<
     if (e->hasPrepare()) withPrepare.push_back(e);
     if (e->hasFinish()) withFinish.push_back(e);
     couplesFilaments = couplesFilaments || e->couplesFilaments();
+    recordsStepVelocities = recordsStepVelocities || e->wantsStepVelocities();
   }
   if (std::find(outer.begin(), outer.end(), 1) == outer.end()) ratio = 1;
   boundary = makePlan(*this, true);
@@ -253,6 +278,7 @@ void advance(State& state, const EffectSequence& fx, const KinematicMap& km, dou
   std::vector<double> slots = profile ? profileSlots(fx) : std::vector<double>{};
   Bodies& s = state.bodies;
   const int n = s.size();
+  if (fx.recordsStepVelocities) state.stepVelocity.resize(n), state.stepAngularVelocity.resize(n);
   const double t0 = state.time;
   // The barrier-free sweep, also on one thread (items computed block by block stay in cache),
   // except for a one-thread profile, which the phase-by-phase scheme below splits by phase.

@@ -57,6 +57,7 @@ struct EffectSequence {
   int ratio = 1;            // outer step / inner step; 1: no splitting
   StepPlan boundary, inner;
   bool couplesFilaments = false;
+  bool recordsStepVelocities = false;  // an effect wants State::stepVelocity (Effect::wantsStepVelocities)
   // `outer` (empty or one flag per effect) takes effect when ratio > 1.
   explicit EffectSequence(const std::vector<Effect*>& effects = {}, std::vector<char> outer = {}, int ratio = 1);
   // Whether the state `cycleStep` steps after a boundary state is one.

@@ -134,6 +134,7 @@ class ContactDampingEffect : public Effect {
   void gather(const State& state, double time, int lo, int hi, Vec3* force, Vec3* torque) const override;
   bool hasFinish() const override { return true; }
   void finish(const State& state, double time) override;  // charges the dissipated work
+  bool wantsStepVelocities() const override { return true; }
   // Stores nothing; entry "contact_dissipated" (EnergyKind::Dissipated).
   void reportEnergy(const State& state, EnergyLedger& ledger) const override;
   void addStabilityTerms(std::vector<ContactStabilityTerms>& perType) const override;
@@ -146,10 +147,17 @@ class ContactDampingEffect : public Effect {
 
  private:
   static bool refreshesList(const Scene& scene, bool owner);
-  // Work: each force evaluation at time t charges its power (sum over pairs of
-  // gamma lambda s |v_rel|^2 + gamma_r lambda s |w_b - w_a|^2) for the time since the last one,
-  // summed over the pairs in their order (independent of the thread count).
-  double dissipated_ = 0.0, lastTime_ = 0.0;
+  // Work: the kinetic energy the dashpot forces F of the force evaluation at time t remove in the
+  // two half kicks they take part in (velocity Verlet), (h/2) F.(v(t - h/2) + v(t))/2 +
+  // (h/2) F.(v(t) + v(t + h/2))/2 = h P(v(t)), P(v) = -F.v (over every pair's forces and torques,
+  // in the pairs' order: independent of the thread count), v(t) being the midpoint of the two
+  // half-step velocities (State::stepVelocity). The charge is booked whole at t; the part of its
+  // second half kick, which comes with the next step, (h/4)(3 P(v(t)) - P(v(t - h/2))), is held
+  // back from the reported work, so that grip work - dissipated = change of the energy holds at
+  // every output to the integrator's own O(h^2) (test GripWorkMinusDissipatedIsTheEnergyChangeWithContacts).
+  double dissipated_ = 0.0, lastTime_ = 0.0, pending_ = 0.0;
+  // P at the velocities of the step's time (State::stepVelocity), with its pair forces and torques.
+  double powerAtStepVelocities(const State& state) const;
   const Scene& scene_;
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;
