@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
 
@@ -82,6 +83,48 @@ TEST(CliDem, RefusedRunWritesNothing) {
   EXPECT_NE(out.find("--resume to continue it"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(dir / "out" / "film.json"));
   EXPECT_EQ(slurp(dir / "out" / "energies.csv"), "its rows");
+  fs::remove_all(dir);
+}
+
+// The two reference films of the networks issue generate as `mesochain dem` builds them (no
+// step run): the film of 500 tubes of 950 nm on 1000 x 1000 nm at 0.154 ug/cm^2 and the ribbon
+// of 814-nm tubes cut to 2000 x 500 nm at 0.211 ug/cm^2 (docs/benchmarks.md, "Deposited
+// buckypaper films"). Their reports agree with a recount from the element count and mass.
+TEST(CliDem, ReferenceFilmsGenerate) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("cli-dem-films-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  struct Film {
+    const char* example;
+    double arealDensity;  // ug/cm^2, requested
+    long filaments;       // -1: cut at the edges (more pieces than tubes laid)
+  };
+  for (const Film& f : {Film{"buckypaper-film", 0.154, 500}, Film{"buckypaper-ribbon", 0.21119, -1}}) {
+    std::string out;
+    ASSERT_EQ(runMesochain(fmt::format("dem {}/examples/{}.toml --set run.steps=0 -o {}", MESOCHAIN_SOURCE_DIR, f.example,
+                                       f.example),
+                           dir, out),
+              0)
+        << out;
+    const nlohmann::json j = mesochain::testing::readJson(dir / f.example / "film.json");
+    const double elements = j["elements"].get<double>(), area = j["area_nm2"].get<double>();
+    EXPECT_EQ(area, 1.0e6) << f.example;
+    if (f.filaments > 0) {
+      EXPECT_EQ(j["filaments"].get<long>(), f.filaments) << f.example;
+    }
+    // 2-nm elements of 0.0064862 ag (examples/buckypaper-model.toml).
+    EXPECT_NEAR(j["mass_ag"].get<double>(), elements * 0.0064862, 1e-9 * elements) << f.example;
+    // 1 ag/nm^2 = 100 ug/cm^2; the last tube laid overshoots the request by at most one tube
+    // (950 nm: 0.3 % of the film), and the cut ribbon keeps what lies inside its edges.
+    EXPECT_NEAR(j["areal_density_ug_per_cm2"].get<double>(), 100.0 * j["mass_ag"].get<double>() / area, 1e-12);
+    EXPECT_NEAR(j["areal_density_ug_per_cm2"].get<double>(), f.arealDensity, 0.005 * f.arealDensity) << f.example;
+    const double thickness = j["thickness_nm"].get<double>();
+    // ug/cm^2 over nm: 1e-6 g / 1e-7 cm.
+    EXPECT_NEAR(j["density_g_per_cm3"].get<double>(), 10.0 * j["areal_density_ug_per_cm2"].get<double>() / thickness, 1e-9)
+        << f.example;
+    EXPECT_GT(j["porosity"].get<double>(), 0.9) << f.example;
+    EXPECT_LT(j["porosity"].get<double>(), 1.0) << f.example;
+  }
   fs::remove_all(dir);
 }
 
