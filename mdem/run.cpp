@@ -343,6 +343,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
 
   // Resume, or start afresh in a folder without an interrupted run (or with --overwrite).
   checkRunFolder(scene, outputDirectory, options);
+  // [run] start_from: the first stage starts where another run ended (a resumed run has it in
+  // its checkpoint). Read before the fresh run clears its folder, which may hold that file (a
+  // scene continuing from its own final state). The steps it had done count toward neither the
+  // progress nor this run's.
+  std::optional<FinalState> startState;
+  if (!options.resume && !scene.run.startFrom.empty()) startState = readFinalState(scene.run.startFrom, scene);
   std::unique_ptr<CheckpointFile> resumed;
   if (options.resume) {
     resumed = std::make_unique<CheckpointFile>(checkpointPath, scene);
@@ -362,10 +368,6 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
     if (it->is_regular_file(ec) && std::regex_match(it->path().filename().string(), temporary)) leftovers.push_back(it->path());
   for (const fs::path& p : leftovers) fs::remove(p, ec), r.removedStale.push_back(p.string());
-  // [run] start_from: the first stage starts where another run ended (a resumed run has it in
-  // its checkpoint). The steps it had done count toward neither the progress nor this run's.
-  std::optional<FinalState> startState;
-  if (!resumed && !scene.run.startFrom.empty()) startState = readFinalState(scene.run.startFrom, scene);
 
   // Where to start: stage 0 at the scene's state, or the checkpoint's stage.
   std::int64_t stageIndex = 0;

@@ -139,6 +139,15 @@ TEST_F(Restart, RelaxThenPullEqualsTwoScenesJoinedByTheFinalState) {
   std::getline(csv, header), std::getline(csv, row);
   EXPECT_EQ(row.substr(0, row.find(',', row.find(',') + 1) + 1), fmt::format("{:.10g},0,", reference.stages[0].time)) << row;
 
+  // A scene continuing from its own final state in its own folder (relax once more): the fresh
+  // run reads the file before it clears its outputs.
+  std::string again = relax;
+  again.replace(again.find("[run]\n"), 6, "[run]\nstart_from = \"relax/relaxed.mdem\"\n");
+  const RunSummary twice = runScene(loadScene(write("again.toml", again)), (dir_ / "relax").string(), nullptr);
+  EXPECT_EQ(twice.startStep, 90);
+  EXPECT_EQ(twice.steps, 180);
+  EXPECT_TRUE(fs::exists(dir_ / "relax" / "relaxed.mdem"));
+
   // Not a final state: a run's checkpoint (of the killed relax), and the final state of another film.
   kill.interruptAfter = 40;
   ASSERT_TRUE(runScene(loadScene(relaxScene), (dir_ / "relax-killed").string(), nullptr, kill).interrupted);
