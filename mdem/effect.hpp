@@ -83,6 +83,9 @@ class Effect {
   virtual void finish(const State& /*state*/, double /*time*/) {}
   // Whether finish reads State::stepVelocity and stepAngularVelocity (the stepper then records them).
   virtual bool wantsStepVelocities() const { return false; }
+  // The forces the next step opens with were evaluated anew outside a step (a new simulation, a
+  // stage boundary: Simulation::refreshForces), replacing those of the last step.
+  virtual void kickForcesReplaced(const State& /*state*/) {}
 
   // The energies of the current state (stored, or dissipated so far) into the ledger. Called at
   // outputs, not per step.

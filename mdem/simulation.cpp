@@ -140,11 +140,13 @@ Simulation::Simulation(const Scene& scene, double startTime, long startStep)
   sequence_ = EffectSequence(pointers, outer, ratio);
   kinematics_.apply(state_.bodies, startTime);
   evaluateKickForces(state_, sequence_, kinematics_);
+  for (const EffectPtr& e : effects_) e->kickForcesReplaced(state_);
 }
 
 void Simulation::refreshForces() {
   cycleStart_ = steps_;  // the refreshed state starts an outer step
   evaluateKickForces(state_, sequence_, kinematics_);
+  for (const EffectPtr& e : effects_) e->kickForcesReplaced(state_);
 }
 
 void Simulation::run(long steps) {

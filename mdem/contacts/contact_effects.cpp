@@ -369,15 +369,25 @@ double ContactDampingEffect::powerAtStepVelocities(const State& state) const {
 void ContactDampingEffect::finish(const State& state, double time) {
   const double h = time - lastTime_;
   lastTime_ = time;
-  pending_ = 0.0;
-  // Forces evaluated outside a step (a new simulation, a refresh) charge nothing: no step's
-  // velocities were recorded (a stage's carried state then restores the work so far).
+  // Forces evaluated outside a step (a new simulation, a refresh, a report) charge nothing here
+  // (kickForcesReplaced).
   if (!(h > 0.0) || state.stepVelocity.size() != static_cast<std::size_t>(state.bodies.size())) return;
   double atItems = 0.0;  // P at the half-step velocities the items used
   for (double p : power_) atItems += p;
   const double now = powerAtStepVelocities(state);
-  dissipated_ += h * now;
+  dissipated_ += h * now + 0.5 * h * opening_;
+  opening_ = 0.0;
   pending_ = 0.25 * h * (3.0 * now - atItems);
+}
+
+void ContactDampingEffect::kickForcesReplaced(const State&) {
+  // The replaced forces never take their second half kick: its share, held back so far, leaves
+  // the work. The new ones open the next step with a half kick at these (synchronised)
+  // velocities, charged at the next finish as (h/2) P(v(t)) (O(h^2), once per boundary).
+  dissipated_ -= pending_;
+  pending_ = 0.0;
+  opening_ = 0.0;
+  for (double p : power_) opening_ += p;
 }
 
 void ContactDampingEffect::reportEnergy(const State&, EnergyLedger& ledger) const {
@@ -387,13 +397,14 @@ void ContactDampingEffect::reportEnergy(const State&, EnergyLedger& ledger) cons
 void ContactDampingEffect::saveState(BinaryWriter& out) const {
   out.write(dissipated_), out.write(lastTime_);
   if (ownsNeighbourhood_) nb_->saveList(out);
-  out.write(pending_);  // last: checkpoints written before it existed end without it
+  out.write(pending_), out.write(opening_);  // last: checkpoints written before they existed end without them
 }
 
 void ContactDampingEffect::loadState(BinaryReader& in) {
   dissipated_ = in.read<double>(), lastTime_ = in.read<double>();
   if (ownsNeighbourhood_) nb_->loadList(in, scene_.bodies.size());
   pending_ = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
+  opening_ = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
   results_.resize(nb_->list().pairs().size());
   power_.resize(results_.size());
 }

@@ -135,6 +135,7 @@ class ContactDampingEffect : public Effect {
   bool hasFinish() const override { return true; }
   void finish(const State& state, double time) override;  // charges the dissipated work
   bool wantsStepVelocities() const override { return true; }
+  void kickForcesReplaced(const State& state) override;
   // Stores nothing; entry "contact_dissipated" (EnergyKind::Dissipated).
   void reportEnergy(const State& state, EnergyLedger& ledger) const override;
   void addStabilityTerms(std::vector<ContactStabilityTerms>& perType) const override;
@@ -156,6 +157,7 @@ class ContactDampingEffect : public Effect {
   // back from the reported work, so that grip work - dissipated = change of the energy holds at
   // every output to the integrator's own O(h^2) (test GripWorkMinusDissipatedIsTheEnergyChangeWithContacts).
   double dissipated_ = 0.0, lastTime_ = 0.0, pending_ = 0.0;
+  double opening_ = 0.0;  // P of forces evaluated outside a step, at their velocities: their opening half kick
   // P at the velocities of the step's time (State::stepVelocity), with its pair forces and torques.
   double powerAtStepVelocities(const State& state) const;
   const Scene& scene_;
