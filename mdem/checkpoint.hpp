@@ -80,7 +80,7 @@ struct FinalState {
   double time = 0.0;     // ns
   double timeStep = 0.0; // ns, of the run that wrote it
   Bodies bodies;
-  std::vector<std::pair<std::string, std::vector<unsigned char>>> effects;  // name, saveState bytes
+  std::vector<std::pair<std::string, std::vector<unsigned char>>> effects;  // name, saveState bytes (run.hpp EffectStates)
 };
 void writeFinalState(const std::string& path, const Scene& scene, const Simulation& sim);
 // Reads `path` for `scene`, whose elements must be those of the run that wrote it (InputError

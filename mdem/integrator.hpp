@@ -56,13 +56,19 @@ inline void kickElement(Bodies& s, int i, double h) {
   s.angularMomentumBody[i] += d.angularMomentumBody;
 }
 // kickElement(s, i, h) twice with the increments formed once: v + dv + dv, L + dL + dL (the same
-// rounding as two calls, since force, torque and orientation do not change between them).
-inline void kickElementTwice(Bodies& s, int i, double h) {
+// rounding as two calls, since force, torque and orientation do not change between them);
+// `between()` sees the element after the first (e.g. to record the velocities of that time).
+template <class Between>
+inline void kickElementTwice(Bodies& s, int i, double h, Between&& between) {
   const KickIncrement d = kickIncrement(s, i, h);
   s.velocity[i] += d.velocity;
+  s.angularMomentumBody[i] += d.angularMomentumBody;
+  between();
   s.velocity[i] += d.velocity;
   s.angularMomentumBody[i] += d.angularMomentumBody;
-  s.angularMomentumBody[i] += d.angularMomentumBody;
+}
+inline void kickElementTwice(Bodies& s, int i, double h) {
+  kickElementTwice(s, i, h, [] {});
 }
 void kick(Bodies& s, double h);
 

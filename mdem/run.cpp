@@ -6,6 +6,7 @@
 #include <memory>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -84,18 +85,6 @@ Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, 
     setUpCompression(s, time, fmt::format("key stages[{}].compression", index));
   }
   return s;
-}
-
-// Copies the evolving state of every effect of `from` into the effect of the same name of `to`
-// (tracked twist branches, dissipated work, neighbour lists), as a checkpoint would.
-void carryEffectStates(const Simulation& from, Simulation& to) {
-  for (const EffectPtr& e : to.effects())
-    if (const Effect* old = from.effect(e->name())) {
-      BinaryWriter out;
-      old->saveState(out);
-      BinaryReader in(out.bytes().data(), out.bytes().size(), "<stage transition>");
-      e->loadState(in);
-    }
 }
 
 // One stage's run: its simulation and outputs.
@@ -268,6 +257,25 @@ class StageRun {
 };
 
 }  // namespace
+
+void continueEffectStates(Simulation& sim, const EffectStates& states, const std::string& source) {
+  for (const EffectPtr& e : sim.effects())
+    for (const auto& [name, bytes] : states)
+      if (name == e->name()) {
+        BinaryReader in(bytes.data(), bytes.size(), source);
+        e->loadState(in);
+      }
+  sim.refreshForces();
+}
+EffectStates savedEffectStates(const Simulation& sim) {
+  EffectStates states;
+  for (const EffectPtr& e : sim.effects()) {
+    BinaryWriter out;
+    e->saveState(out);
+    states.emplace_back(e->name(), out.bytes());
+  }
+  return states;
+}
 
 CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath) {
   const CheckpointFile file(checkpointPath, scene);
@@ -460,19 +468,10 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       if (options.resumedAt) options.resumedAt(std::min(1.0, static_cast<double>(sim.stepCount() - baseStep) / totalSteps));
       run->open(&tail);
     } else {
-      if (previous) {
-        carryEffectStates(previous->sim(), sim);
-        sim.refreshForces();
-      } else if (startState) {
-        // As a stage transition: each effect of the same name continues its state.
-        for (const EffectPtr& e : sim.effects())
-          for (const auto& [name, bytes] : startState->effects)
-            if (name == e->name()) {
-              BinaryReader in(bytes.data(), bytes.size(), scene.run.startFrom);
-              e->loadState(in);
-            }
-        sim.refreshForces();
-      }
+      if (previous)
+        continueEffectStates(sim, savedEffectStates(previous->sim()), "<stage transition>");
+      else if (startState)
+        continueEffectStates(sim, startState->effects, scene.run.startFrom);
       run->open(nullptr);
     }
     if (r.timeStep == 0.0) {

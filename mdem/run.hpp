@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mdem/compression.hpp"
@@ -125,6 +126,15 @@ struct CheckpointState {
   std::int64_t stage = 0;
 };
 CheckpointState readCheckpointState(const Scene& scene, const std::string& checkpointPath);
+
+// Each effect's evolving state by name (Effect::saveState bytes), as a checkpoint holds them.
+using EffectStates = std::vector<std::pair<std::string, std::vector<unsigned char>>>;
+EffectStates savedEffectStates(const Simulation& sim);
+// A stage's start from the state another simulation ended in (the stage before, or another
+// run's final state): each effect of `sim` continues the state saved under its name (tracked
+// twist branches, dissipated work, neighbour lists), the others start afresh; then the forces of
+// the start are evaluated anew (Simulation::refreshForces). `source` names the states in errors.
+void continueEffectStates(Simulation& sim, const EffectStates& states, const std::string& source);
 
 // The files a run of `scene` writes into its output folder (relative names; the checkpoint and
 // the numbered VTK frames aside): a fresh run removes those an earlier run left there.

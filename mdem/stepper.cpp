@@ -81,16 +81,7 @@ inline void kickBlock(State& state, const KinematicMap& km, int lo, int hi, doub
   // closeStep then openStep of a free element: the two half kicks share their force and
   // orientation, so the increment is formed once and added twice (the same sums, bit for bit, as
   // two kickElement calls: a run resumed between them gives the same state).
-  const auto kickTwice = [&](int i) {
-    if constexpr (!record) {
-      kickElementTwice(s, i, 0.5 * h);
-    } else {
-      const KickIncrement d = kickIncrement(s, i, 0.5 * h);
-      s.velocity[i] += d.velocity, s.angularMomentumBody[i] += d.angularMomentumBody;
-      recordAt(i);
-      s.velocity[i] += d.velocity, s.angularMomentumBody[i] += d.angularMomentumBody;
-    }
-  };
+  const auto kickTwice = [&](int i) { kickElementTwice(s, i, 0.5 * h, [&] { recordAt(i); }); };
   for (int i = lo; i < hi; ++i) {
     if (!last && !km.constrained(i)) {
       // Two free neighbours drift together (driftFreePair: the same results, overlapped).

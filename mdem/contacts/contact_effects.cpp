@@ -352,6 +352,12 @@ void ContactDampingEffect::gather(const State&, double, int lo, int hi, Vec3* fo
   gatherPairs(nb_->list(), results_, lo, hi, force, torque);
 }
 
+double ContactDampingEffect::powerAtItemVelocities() const {
+  double power = 0.0;  // in the pairs' order
+  for (double p : power_) power += p;
+  return power;
+}
+
 double ContactDampingEffect::powerAtStepVelocities(const State& state) const {
   const std::vector<Vec3>& v = state.stepVelocity;
   const std::vector<Vec3>& w = state.stepAngularVelocity;
@@ -372,8 +378,7 @@ void ContactDampingEffect::finish(const State& state, double time) {
   // Forces evaluated outside a step (a new simulation, a refresh, a report) charge nothing here
   // (kickForcesReplaced).
   if (!(h > 0.0) || state.stepVelocity.size() != static_cast<std::size_t>(state.bodies.size())) return;
-  double atItems = 0.0;  // P at the half-step velocities the items used
-  for (double p : power_) atItems += p;
+  const double atItems = powerAtItemVelocities();
   const double now = powerAtStepVelocities(state);
   dissipated_ += h * now + 0.5 * h * opening_;
   opening_ = 0.0;
@@ -386,8 +391,7 @@ void ContactDampingEffect::kickForcesReplaced(const State&) {
   // velocities, charged at the next finish as (h/2) P(v(t)) (O(h^2), once per boundary).
   dissipated_ -= pending_;
   pending_ = 0.0;
-  opening_ = 0.0;
-  for (double p : power_) opening_ += p;
+  opening_ = powerAtItemVelocities();
 }
 
 void ContactDampingEffect::reportEnergy(const State&, EnergyLedger& ledger) const {

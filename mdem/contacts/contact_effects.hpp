@@ -160,6 +160,8 @@ class ContactDampingEffect : public Effect {
   double opening_ = 0.0;  // P of forces evaluated outside a step, at their velocities: their opening half kick
   // P at the velocities of the step's time (State::stepVelocity), with its pair forces and torques.
   double powerAtStepVelocities(const State& state) const;
+  // P at the velocities the last force evaluation's items used.
+  double powerAtItemVelocities() const;
   const Scene& scene_;
   ContactDampingSpec spec_;
   std::shared_ptr<ContactNeighbourhood> nb_;

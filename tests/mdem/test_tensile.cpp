@@ -12,7 +12,7 @@
 #include "common/errors.hpp"
 
 #include "contact_fixture.hpp"
-#include "mdem/binary_io.hpp"
+#include "mdem/run.hpp"
 #include "mdem/tensile.hpp"
 
 namespace mesochain::mdem {
@@ -33,6 +33,29 @@ Scene tubeBetweenGrips(std::vector<std::string> effects, double ramp) {
   setUpTensile(s);
   s.run.timeStepFraction = 0.5;
   return s;
+}
+
+// A free tube of 6 elements lying on the gripped one at a wall gap of 0.32 nm, with vdW contacts
+// and dashpots (no local damping): the pull drags it along, the dashpots taking their share.
+Scene draggedTubeScene(double timeStepFraction) {
+  Scene s = tubeBetweenGrips({"bonds", "vdw_contact", "contact_damping"}, 0.002);
+  s.contacts.damping.translational = 1.0, s.contacts.damping.rotational = 0.1;
+  addTube(s, 6, Vec3(6.0, 2.0 * kTubeRadius + 0.32, 0.0), Vec3::UnitX());
+  s.run.timeStepFraction = timeStepFraction;
+  return s;
+}
+
+// Runs `sim` to `until` (ns), `every` steps at a time, recording a sample after each (the grips'
+// work is the trapezoid rule over the samples); `each` sees every new sample.
+template <class Each>
+void recordUntil(Simulation& sim, TensileRecorder& rec, double until, long every, Each&& each) {
+  while (sim.time() < until) {
+    sim.run(every);
+    each(rec.record(sim));
+  }
+}
+void recordUntil(Simulation& sim, TensileRecorder& rec, double until, long every) {
+  recordUntil(sim, rec, until, every, [](const TensileSample&) {});
 }
 
 TEST(MdemTensile, GripsFollowTheRampProfile) {
@@ -123,10 +146,7 @@ TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
   Simulation sim(s);
   TensileRecorder rec(s, "");
   rec.record(sim);
-  while (sim.time() < 0.01) {
-    sim.run(2);
-    rec.record(sim);
-  }
+  recordUntil(sim, rec, 0.01, 2);
   const TensileSample& last = rec.samples().back();
   const EnergyLedger& e = last.energies;
   const double parts = e["stretching"] + e["shearing"] + e["twisting"] + e["bending"] + e["vdw"] +
@@ -148,20 +168,14 @@ TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
 TEST(MdemTensile, GripWorkMinusDissipatedIsTheEnergyChangeWithContacts) {
   std::vector<double> worst;
   for (double fraction : {0.4, 0.2, 0.1, 0.05}) {
-    Scene s = tubeBetweenGrips({"bonds", "vdw_contact", "contact_damping"}, 0.002);
-    s.contacts.damping.translational = 1.0, s.contacts.damping.rotational = 0.1;
-    addTube(s, 6, Vec3(6.0, 2.0 * kTubeRadius + 0.32, 0.0), Vec3::UnitX());
-    s.run.timeStepFraction = fraction;
+    const Scene s = draggedTubeScene(fraction);
     Simulation sim(s);
     TensileRecorder rec(s, "");
-    rec.record(sim);
+    const double start = rec.record(sim).energies.total();
     double mismatch = 0.0;
-    while (sim.time() < 0.01) {
-      sim.run(1);
-      const TensileSample& t = rec.record(sim);
-      const double change = t.energies.total() - rec.samples().front().energies.total();
-      mismatch = std::max(mismatch, std::abs(change - (t.gripWork - t.energies.dissipated())));
-    }
+    recordUntil(sim, rec, 0.01, 1, [&](const TensileSample& t) {
+      mismatch = std::max(mismatch, std::abs(t.energies.total() - start - (t.gripWork - t.energies.dissipated())));
+    });
     const TensileSample& last = rec.samples().back();
     std::printf("fraction %.2g: %zu steps, grip work %.9g zJ, dissipated %.9g, largest mismatch %.3g of W\n", fraction,
                 rec.samples().size() - 1, last.gripWork, last.energies.dissipated(), mismatch / last.gripWork);
@@ -177,34 +191,19 @@ TEST(MdemTensile, GripWorkMinusDissipatedIsTheEnergyChangeWithContacts) {
 // [[stages]]). The replaced forces never take their second half kick and the new ones open the
 // next step (contact_effects.hpp): the mismatch stays at the single simulation's O(h^2) level.
 TEST(MdemTensile, GripWorkMinusDissipatedHoldsAcrossAStageBoundary) {
-  Scene s = tubeBetweenGrips({"bonds", "vdw_contact", "contact_damping"}, 0.002);
-  s.contacts.damping.translational = 1.0, s.contacts.damping.rotational = 0.1;
-  addTube(s, 6, Vec3(6.0, 2.0 * kTubeRadius + 0.32, 0.0), Vec3::UnitX());
-  s.run.timeStepFraction = 0.05;
+  const Scene s = draggedTubeScene(0.05);
   Simulation first(s);
   TensileRecorder before(s, "");
   const EnergyLedger start = before.record(first).energies;
-  double workBefore = 0.0;
-  while (first.time() < 0.005) {  // the grips' work is the trapezoid rule over the samples: every step
-    first.run(1);
-    workBefore = before.record(first).gripWork;
-  }
+  recordUntil(first, before, 0.005, 1);
+  const double workBefore = before.samples().back().gripWork;
   Scene next = s;
   next.bodies = first.bodies();
   Simulation second(next, first.time(), first.stepCount());
-  for (const EffectPtr& e : second.effects()) {
-    BinaryWriter out;
-    first.effect(e->name())->saveState(out);
-    BinaryReader in(out.bytes().data(), out.bytes().size(), "<boundary>");
-    e->loadState(in);
-  }
-  second.refreshForces();
+  continueEffectStates(second, savedEffectStates(first), "<boundary>");
   TensileRecorder after(next, "");
   after.record(second);
-  while (second.time() < 0.01) {
-    second.run(1);
-    after.record(second);
-  }
+  recordUntil(second, after, 0.01, 1);
   const TensileSample& end = after.samples().back();
   const double work = workBefore + end.gripWork;
   const double mismatch = end.energies.total() - start.total() - (work - end.energies.dissipated());
