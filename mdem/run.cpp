@@ -205,7 +205,20 @@ class StageRun {
   void finish(StageSummary& out) {
     if (plot_) plot_->write(prepare(spec_.plotPng));
     if (tensile_) {
-      if (!scene_.tensile.png.empty()) tensile_->writePlot(prepare(scene_.tensile.png));
+      // Bundle sizes at the stage's start and end, from the positions (bundle_sizes.hpp), with the
+      // contact criteria of the samples.
+      TensileBundles bundles;
+      bundles.contactGap = scene_.tensile.contactGap, bundles.alignedAngle = scene_.tensile.alignedAngle;
+      const bool contacts = sim_.contactNeighbourhood() != nullptr;
+      if (contacts) {
+        Scene at = scene_;
+        at.bodies = startBodies_;
+        bundles.start = sceneBundleSizes(at, bundles.contactGap, bundles.alignedAngle, scene_.contacts.excludeWithin);
+        at.bodies = sim_.bodies();
+        bundles.end = sceneBundleSizes(at, bundles.contactGap, bundles.alignedAngle, scene_.contacts.excludeWithin);
+      }
+      bundles.startStrain = tensile_->samples().front().strain, bundles.endStrain = tensile_->samples().back().strain;
+      if (!scene_.tensile.png.empty()) tensile_->writePlot(prepare(scene_.tensile.png), &bundles);
       const TensileSample& last = tensile_->samples().back();
       out.tensile = true, out.finalStrain = last.strain, out.finalStress = last.stress;
       for (const TensileSample& t : tensile_->samples()) out.peakStress = std::max(out.peakStress, t.stress);
@@ -216,7 +229,7 @@ class StageRun {
       out.tensileCsv = prepare(scene_.tensile.csv);
       out.tensileJson = prepare(scene_.tensile.json);
       writeTensilePropertiesJson(out.tensileJson, out.properties, scene_.tensile.crossSection, scene_.tensile.gaugeLength,
-                                 scene_.tensile.strainRate);
+                                 scene_.tensile.strainRate, contacts ? &bundles : nullptr);
     }
     if (compression_) {
       const CompressionSpec& c = scene_.compression;

@@ -347,7 +347,7 @@ void readTensileTable(const TomlTable& t, TensileSpec& ts) {
     t.fail("aligned_angle_deg", fmt::format("{}", t.number("aligned_angle_deg")), "an angle in [0, 90] degrees");
   ts.csv = t.stringOr("csv", ts.csv);
   ts.json = t.stringOr("json", ts.json);
-  ts.png = t.stringOr("plot_png", "");
+  ts.png = t.stringOr("plot_png", ts.png);
   ts.finalStrain = t.has("final_strain") ? t.positive("final_strain") : 0.0;
 }
 
@@ -373,7 +373,7 @@ void readCompressionTable(const TomlTable& t, CompressionSpec& c) {
   c.area = t.has("area_nm2") ? t.positive("area_nm2") : 0.0;
   c.csv = t.stringOr("csv", c.csv);
   c.cyclesCsv = t.stringOr("cycles_csv", c.cyclesCsv);
-  c.png = t.stringOr("plot_png", "");
+  c.png = t.stringOr("plot_png", c.png);
 }
 
 // [[stages]] (docs/scene-file.md): [run] keeps the time step; its steps and stop keys move to
@@ -424,13 +424,14 @@ void readStages(const TomlTable& root, Scene& s) {
     st.energiesCsv = t.stringOr("energies_csv", st.name + "-energies.csv");
     st.energiesEvery = t.integerOr("energies_every", 100);
     if (st.energiesEvery < 1) t.fail("energies_every", std::to_string(st.energiesEvery), "at least 1");
-    st.plotPng = t.stringOr("plot_png", "");
+    st.plotPng = t.stringOr("plot_png", st.name + "-energies.png");  // "" for none
     if (st.tensileStage != t.has("tensile"))
       t.fail("tensile", st.tensileStage ? "a tensile stage without its [stages.tensile] table" : "a [stages.tensile] table in a " + kind + " stage",
              "kind = \"tensile\" with its table, or neither");
     if (st.tensileStage) {
       st.tensile.csv = st.name + "-tensile.csv";
       st.tensile.json = st.name + "-tensile.json";
+      st.tensile.png = st.name + "-tensile.png";
       readTensileTable(t.requireTable("tensile"), st.tensile);
     }
     if (st.compressionStage != t.has("compression"))
@@ -440,6 +441,7 @@ void readStages(const TomlTable& root, Scene& s) {
     if (st.compressionStage) {
       st.compression.csv = st.name + "-compression.csv";
       st.compression.cyclesCsv = st.name + "-cycles.csv";
+      st.compression.png = st.name + "-compression.png";
       readCompressionTable(t.requireTable("compression"), st.compression);
     }
     s.stages.push_back(std::move(st));

@@ -166,7 +166,7 @@ ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double fro
   return f;
 }
 
-void TensileRecorder::writePlot(const std::string& path) const {
+void TensileRecorder::writePlot(const std::string& path, const TensileBundles* bundles) const {
   std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
   // Each stored (potential) energy, the kinetic energy, the grip work and total - initial.
   std::vector<std::string> names;
@@ -226,6 +226,25 @@ void TensileRecorder::writePlot(const std::string& path) const {
   plot::Image image = plot::aboveEachOther(fs.render(width, height, path), fe.render(width, height, path));
   image = plot::aboveEachOther(image, fc.render(width, height, path));
   image = plot::aboveEachOther(image, fo.render(width, height, path));
+  if (bundles && bundles->end.elements > 0 && (bundles->start.bundles > 0 || bundles->end.bundles > 0)) {
+    plot::Figure fb("Bundle sizes at the stage's start and end");
+    fb.x.label = "bundle size (elements), classes [2^k, 2^(k+1)) at their centres";
+    fb.x.scale = plot::Scale::Log10;
+    fb.y.label = "fraction of all elements";
+    const auto add = [&](const char* when, double strain, const BundleSizeDistribution& d, int colour) {
+      std::vector<double> size, fraction;
+      for (std::size_t c = 0; c < d.elementFractionInClass.size(); ++c)
+        size.push_back(std::sqrt(2.0) * static_cast<double>(BundleSizeDistribution::classLower(c))),
+            fraction.push_back(d.elementFractionInClass[c]);
+      plot::SeriesStyle style;
+      style.color = plot::paletteColor(colour);
+      style.marker = plot::Marker::Circle;
+      fb.add(fmt::format("{}, strain {:.3g}: {} bundles, largest {}", when, strain, d.bundles, d.largest), size, fraction, style);
+    };
+    add("start", bundles->startStrain, bundles->start, 0);
+    add("end", bundles->endStrain, bundles->end, 1);
+    image = plot::aboveEachOther(image, fb.render(width, height, path));
+  }
   plot::writePng(path, image);
 }
 

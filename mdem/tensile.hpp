@@ -27,6 +27,7 @@
 
 #include "mdem/append_file.hpp"
 #include "mdem/binary_io.hpp"
+#include "mdem/contacts/bundle_sizes.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 
@@ -66,6 +67,14 @@ ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double fro
 inline constexpr double kElasticStrain = 0.03;
 inline constexpr int kElasticMinimumSamples = 3;
 
+// The bundle-size distributions (bundle_sizes.hpp) at a stage's start and end, with the
+// criteria of the [tensile] contact counts.
+struct TensileBundles {
+  double contactGap = 0.0, alignedAngle = 0.0;  // nm, rad
+  double startStrain = 0.0, endStrain = 0.0;
+  BundleSizeDistribution start, end;
+};
+
 class TensileRecorder {
  public:
   // Opens the CSV (path) when not empty; resumeAt >= 0 appends to an interrupted run's CSV cut
@@ -76,8 +85,9 @@ class TensileRecorder {
   const TensileSample& record(const Simulation& sim) { return record(sim, sim.energies()); }
   const TensileSample& record(const Simulation& sim, const EnergyLedger& energies);
   const std::vector<TensileSample>& samples() const { return samples_; }
-  // PNG: stress-strain, energies against strain, contact and aligned pair counts.
-  void writePlot(const std::string& path) const;
+  // PNG: stress-strain, energies against strain, contact and aligned pair counts, orientation,
+  // and the bundle-size distributions at the stage's start and end when given.
+  void writePlot(const std::string& path, const TensileBundles* bundles = nullptr) const;
   // Checkpoints: the samples so far and the integration state of the grip work.
   void saveState(BinaryWriter& out) const;
   void loadState(BinaryReader& in);

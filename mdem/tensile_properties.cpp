@@ -71,7 +71,7 @@ TensileProperties tensileProperties(const std::vector<TensileSample>& s) {
 }
 
 void writeTensilePropertiesJson(const std::string& path, const TensileProperties& p, double crossSection,
-                                double gaugeLength, double strainRate) {
+                                double gaugeLength, double strainRate, const TensileBundles* bundles) {
   nlohmann::json j;
   j["format"] = 1;
   j["kind"] = "tensile_properties";
@@ -100,6 +100,19 @@ void writeTensilePropertiesJson(const std::string& path, const TensileProperties
       {"ultimate", "largest engineering stress and the strain of the first sample reaching it"},
       {"failure", "first strain after the ultimate where the stress falls to stress_fraction_of_ultimate of it"},
       {"toughness", "trapezoid sum of stress d(strain); 1 MPa = 1 MJ/m^3"}};
+  if (bundles) {
+    nlohmann::json b;
+    b["definition"] =
+        "connected groups of elements joined by contacts (wall gap < contact_gap_nm) whose axes cross below aligned_angle_deg; "
+        "sizes in elements, classes [from, to) with the bundles in each and the fraction of all elements they hold";
+    b["contact_gap_nm"] = bundles->contactGap;
+    b["aligned_angle_deg"] = bundles->alignedAngle * 180.0 / 3.14159265358979323846;
+    b["stage_start"] = bundleSizesJson(bundles->start);
+    b["stage_start"]["strain"] = bundles->startStrain;
+    b["stage_end"] = bundleSizesJson(bundles->end);
+    b["stage_end"]["strain"] = bundles->endStrain;
+    j["bundle_size_distribution"] = b;
+  }
   writeFileAtomically(path, j.dump(2) + "\n");
 }
 

@@ -39,8 +39,9 @@ struct TensileProperties {
 TensileProperties tensileProperties(const std::vector<TensileSample>& samples);
 
 // JSON with the properties (NaN as null), the cross-section (nm^2), gauge length (nm) and strain
-// rate (1/ns) they refer to and the definitions used; written atomically.
+// rate (1/ns) they refer to and the definitions used, and the bundle-size distributions when
+// given; written atomically.
 void writeTensilePropertiesJson(const std::string& path, const TensileProperties& p, double crossSection,
-                                double gaugeLength, double strainRate);
+                                double gaugeLength, double strainRate, const TensileBundles* bundles = nullptr);
 
 }  // namespace mesochain::mdem

@@ -57,7 +57,15 @@ FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o
   // 1 ag/nm^3 = 1e-18 g / 1e-21 cm^3 = 1e3 g/cm^3.
   f.density = f.mass / (f.area * f.thickness) * 1e3;
   f.porosity = 1.0 - volume / (f.area * f.thickness);
-  f.contactPairs = static_cast<long>(closePairs(scene, o.contactGap, o.excludeWithin).size());
+  const std::vector<ClosePair> contacts = closePairs(scene, o.contactGap, o.excludeWithin);
+  f.contactPairs = static_cast<long>(contacts.size());
+  f.alignedAngleDeg = o.alignedAngleDeg;
+  const double cosAligned = std::cos(o.alignedAngleDeg * units::kPi / 180.0);
+  std::vector<std::pair<int, int>> aligned;
+  for (const ClosePair& p : contacts)
+    if (std::abs(rotate(b.orientation[p.i], Vec3::UnitZ()).dot(rotate(b.orientation[p.j], Vec3::UnitZ()))) >= cosAligned)
+      aligned.emplace_back(p.i, p.j);
+  f.bundles = bundleSizeDistribution(f.elements, aligned);
   f.contactsPerElement = 2.0 * f.contactPairs / f.elements;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(f.orientation);
   f.lambda1 = eig.eigenvalues()[1], f.lambda2 = eig.eigenvalues()[0];
@@ -82,7 +90,12 @@ std::string formatFilmStatistics(const FilmStatistics& f) {
                         "diameter mean {:.4g} nm, median {:.4g} nm, largest {:.4g} nm\n",
                         f.pores.spacing[0], f.pores.voidFraction, f.pores.meanDiameter, f.pores.medianDiameter,
                         f.pores.largestDiameter);
-  return formatFilmLine(f) + pores;
+  const BundleSizeDistribution& d = f.bundles;
+  const std::string bundles = fmt::format(
+      "bundles (contacts aligned within {:.3g} deg): {}, holding {:.3g} of the elements; mean {:.4g}, largest {} elements\n",
+      f.alignedAngleDeg, d.bundles, d.elements > 0 ? static_cast<double>(d.elementsInBundles) / d.elements : 0.0, d.mean,
+      d.largest);
+  return formatFilmLine(f) + bundles + pores;
 }
 
 std::string formatFilmLine(const FilmStatistics& f) {
@@ -117,6 +130,15 @@ void writeFilmStatisticsJson(const FilmStatistics& f, const std::string& path) {
   j["orientation_eigenvalues"] = {f.lambda1, f.lambda2};
   j["order_parameter"] = f.orderParameter;
   j["director_angle_deg"] = f.directorAngleDeg;
+  {
+    nlohmann::ordered_json d;
+    d["definition"] =
+        "connected groups of elements joined by contacts (wall gap < contact_gap_nm) whose axes cross below aligned_angle_deg; "
+        "sizes in elements, classes [from, to) with the bundles in each and the fraction of all elements they hold";
+    d["aligned_angle_deg"] = f.alignedAngleDeg;
+    d.update(bundleSizesJson(f.bundles));
+    j["bundle_size_distribution"] = d;
+  }
   if (f.hasPores) {
     const PoreSizeDistribution& p = f.pores;
     nlohmann::ordered_json q;

@@ -13,12 +13,15 @@
 //   the 2-D orientation tensor Q = <u u^T> of the in-plane unit directions u of the element
 //     axes, its eigenvalues lambda_1 >= lambda_2 (sum 1), the order parameter S = lambda_1 -
 //     lambda_2 (0 isotropic, 1 all parallel) and the director angle from x;
+//   the bundle-size distribution (bundle_sizes.hpp): bundles of elements joined by contacts
+//     (wall gap < contactGap) whose axes cross below alignedAngleDeg;
 //   the pore-size distribution (pore_size.hpp): local pore diameter = the largest empty sphere
 //     centred at a point of the void, over a grid within the film's thickness.
 #include <string>
 
 #include <Eigen/Dense>
 
+#include "mdem/contacts/bundle_sizes.hpp"
 #include "mdem/contacts/pore_size.hpp"
 #include "mdem/scene.hpp"
 
@@ -28,6 +31,7 @@ struct FilmStatisticsOptions {
   double contactGap = 0.5;   // nm
   double vdwShell = 0.17;    // nm, added to the tube radius for the porosity
   int excludeWithin = 3;     // elements along one tube not counted as contacts
+  double alignedAngleDeg = 10.0;  // contacts crossing below it join bundles ([tensile] aligned_angle_deg's default)
   bool poreSizes = true;     // compute the pore-size distribution
   PoreSizeOptions pores;     // its shell is vdwShell
 };
@@ -46,6 +50,8 @@ struct FilmStatistics {
   double contactsPerElement = 0.0;
   Eigen::Matrix2d orientation = Eigen::Matrix2d::Zero();
   double lambda1 = 0.0, lambda2 = 0.0, orderParameter = 0.0, directorAngleDeg = 0.0;
+  double alignedAngleDeg = 0.0;
+  BundleSizeDistribution bundles;
   bool hasPores = false;
   PoreSizeDistribution pores;
 };

@@ -1,40 +1,28 @@
 #include "mdem/contacts/network_structure.hpp"
 
 #include <cmath>
-#include <numeric>
+#include <utility>
 #include <vector>
 
-namespace mesochain::mdem {
+#include "mdem/contacts/bundle_sizes.hpp"
 
-namespace {
-int root(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];  // path halving
-  return i;
-}
-}  // namespace
+namespace mesochain::mdem {
 
 NetworkStructure networkStructure(const ContactNeighbourhood& nb, const Bodies& b, double maxGap, double maxAngle,
                                   int axis) {
   NetworkStructure r;
   const double cosMax = std::cos(maxAngle);
-  std::vector<int> parent(b.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::vector<char> joined(b.size(), 0);
+  std::vector<std::pair<int, int>> aligned;
   for (const auto& [i, j] : nb.list().pairs()) {
     const Segment a = nb.segment(b, i), s = nb.imageNear(b, j, a.centre);
     if (wallGap(a, s, nb.radius(b.type[i]), nb.radius(b.type[j])) > maxGap) continue;
     ++r.contacts;
     if (std::abs(a.axis.dot(s.axis)) < cosMax) continue;
     ++r.aligned;
-    joined[i] = joined[j] = 1;
-    parent[root(parent, i)] = root(parent, j);
+    aligned.emplace_back(i, j);
   }
-  std::vector<int> size(b.size(), 0);
-  for (int i = 0; i < b.size(); ++i)
-    if (joined[i]) ++size[root(parent, i)];
-  for (int s : size)
-    if (s > 0) ++r.bundles, r.elementsInBundles += s, r.largestBundle = std::max(r.largestBundle, s);
-  r.meanBundle = r.bundles > 0 ? static_cast<double>(r.elementsInBundles) / r.bundles : 0.0;
+  const BundleSizeDistribution d = bundleSizeDistribution(b.size(), aligned);
+  r.bundles = d.bundles, r.elementsInBundles = d.elementsInBundles, r.largestBundle = d.largest, r.meanBundle = d.mean;
   // Orientation tensor of the in-plane projections.
   double qxx = 0.0, qxy = 0.0, qyy = 0.0;
   int counted = 0;

@@ -168,16 +168,47 @@ TEST(MdemDeposition, FilmReportMatchesAnIndependentRecount) {
   ASSERT_EQ(heavy.bodies.mass[0], 9.0 * s.bodies.mass[0]);
   EXPECT_EQ(filmStatistics(heavy).density, f.density);
   EXPECT_EQ(filmStatistics(heavy).arealDensity, f.arealDensity);
-  // Contacts by brute force over all pairs (minimum image, same tube within 3 excluded).
+  // Contacts by brute force over all pairs (minimum image, same tube within 3 excluded), and
+  // the aligned ones (axes within 10 degrees) as an adjacency list for the bundles.
   const FilamentTopology topo = buildTopology(s.bodies.size(), s.bonds, 3, {});
   long pairs = 0;
+  std::vector<std::vector<int>> alignedWith(s.bodies.size());
   for (int i = 0; i < s.bodies.size(); ++i)
     for (int j = i + 1; j < s.bodies.size(); ++j) {
       if (topo.excluded(i, j)) continue;
       const Segment si{s.bodies.position[i], axisOf(s, i), 1.0};
       const Segment sj{si.centre + s.periodic.minimumImage(s.bodies.position[j] - si.centre), axisOf(s, j), 1.0};
-      pairs += segmentDistance(si, sj) - 2.0 * kTubeRadius < 0.5;
+      const bool contact = segmentDistance(si, sj) - 2.0 * kTubeRadius < 0.5;
+      pairs += contact;
+      if (contact && std::abs(si.axis.dot(sj.axis)) >= std::cos(10.0 * kDeg))
+        alignedWith[i].push_back(j), alignedWith[j].push_back(i);
     }
+  // Bundles by flood fill: the connected components of the aligned contacts.
+  std::vector<int> seen(s.bodies.size(), 0), sizes;
+  for (int i = 0; i < s.bodies.size(); ++i) {
+    if (seen[i] || alignedWith[i].empty()) continue;
+    std::vector<int> stack{i};
+    seen[i] = 1;
+    int size = 0;
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back(), ++size;
+      for (int m : alignedWith[k])
+        if (!seen[m]) seen[m] = 1, stack.push_back(m);
+    }
+    sizes.push_back(size);
+  }
+  ASSERT_FALSE(sizes.empty());
+  EXPECT_EQ(f.bundles.bundles, static_cast<int>(sizes.size()));
+  EXPECT_EQ(f.bundles.largest, *std::max_element(sizes.begin(), sizes.end()));
+  std::vector<int> perClass(f.bundles.bundlesInClass.size(), 0);
+  for (int size : sizes) {
+    int c = 0;
+    while ((4 << c) <= size) ++c;  // [2^(c+1), 2^(c+2))
+    ASSERT_LT(c, static_cast<int>(perClass.size()));
+    ++perClass[c];
+  }
+  EXPECT_EQ(perClass, f.bundles.bundlesInClass);
   EXPECT_EQ(f.contactPairs, pairs);
   EXPECT_GT(pairs, 0);
   EXPECT_NEAR(f.contactsPerElement, 2.0 * pairs / s.bodies.size(), 1e-12);
@@ -188,6 +219,7 @@ TEST(MdemDeposition, FilmReportMatchesAnIndependentRecount) {
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\"density_g_per_cm3\""), std::string::npos);
+  EXPECT_NE(text.find("\"bundle_size_distribution\""), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
 }
 

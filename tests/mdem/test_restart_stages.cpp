@@ -2,6 +2,7 @@
 // given as durations and compression cycles resume bit for bit from a checkpoint at any step;
 // stage errors name their key; --profile names every effect's phases. The fixture:
 // restart_fixture.hpp.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +64,9 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax-energies.csv"));
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.csv"));
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax.png"));
+  // One PNG per stage without asking: the pull's energies and its tensile plot by default names.
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-energies.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.png"));
   // The pull's strain counts from the grips' places at its start: 0 in its first row.
   std::ifstream csv(dir_ / "reference" / "pull-tensile.csv");
   std::string header, row;
@@ -76,6 +80,32 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
     EXPECT_EQ(j["ultimate"]["stress_MPa"].get<double>(), reference.stages[1].peakStress);
     EXPECT_EQ(j["final"]["strain"].get<double>(), reference.stages[1].finalStrain);
     EXPECT_EQ(reference.stages[1].tensileJson, (dir_ / "reference" / "pull-tensile.json").string());
+    // Its bundle-size distributions, found from the positions with a cell list, hold the bundles
+    // of the CSV's first and last rows, found with the contact neighbour list.
+    std::ifstream rows(dir_ / "reference" / "pull-tensile.csv");
+    std::vector<std::vector<std::string>> table;
+    for (std::string line; std::getline(rows, line);) {
+      std::vector<std::string> cells;
+      std::stringstream cellStream(line);
+      for (std::string c; std::getline(cellStream, c, ',');) cells.push_back(c);
+      table.push_back(cells);
+    }
+    ASSERT_GE(table.size(), 3u);
+    const auto column = [&](const std::string& name) {
+      const auto it = std::find(table[0].begin(), table[0].end(), name);
+      EXPECT_NE(it, table[0].end()) << name;
+      return static_cast<std::size_t>(it - table[0].begin());
+    };
+    const nlohmann::json& b = j["bundle_size_distribution"];
+    EXPECT_EQ(b["aligned_angle_deg"].get<double>(), 10.0);
+    for (const auto& [when, row] : {std::pair{"stage_start", table[1]}, std::pair{"stage_end", table.back()}}) {
+      EXPECT_EQ(b[when]["bundles"].get<int>(), std::stoi(row[column("bundles")])) << when;
+      EXPECT_EQ(b[when]["largest_elements"].get<int>(), std::stoi(row[column("largest_bundle_elements")])) << when;
+      int bundles = 0;
+      for (const auto& c : b[when]["classes"]) bundles += c["bundles"].get<int>();
+      EXPECT_EQ(bundles, b[when]["bundles"].get<int>()) << when;
+    }
+    EXPECT_GT(b["stage_end"]["bundles"].get<int>(), 0);
   }
   // Interrupted inside the relax, just after the boundary's checkpoint, and inside the pull.
   expectStagedResumesMatch(reference, {35L, 90L, 95L, 150L});
