@@ -116,6 +116,7 @@ struct ZippingOptions {
   double restKinetic = 0.1;      // zJ
   double sampleTime = 1e-3;      // ns between samples (1 ps)
   int elements = 8;
+  double startGap = 0.5;         // nm, wall gap at the crossing when released (issue 12: 0.5)
   std::string seriesPath;        // CSV time series of every run ("" = none)
 };
 
@@ -160,7 +161,7 @@ struct ZippingResult {
          speedWeighted = 0.0;
 };
 
-// Two tubes of n elements crossed at `angle`, wall gap 0.34 nm at their middles, released and
+// Two tubes of n elements crossed at `angle`, wall gap o.startGap at their middles, released and
 // run for o.maxTime. h = 2e-5 ns (as in bench/zipping-2026-11-22.txt) unless 0.7 of the critical
 // step is shorter (dashpots with gamma > 2: the estimate takes six neighbours, so it is cautious). `series` (may be null) receives one CSV record per sample.
 ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions& o, std::string* series) {
@@ -172,7 +173,7 @@ ZippingResult zip(double angle, double alpha, double gamma, const ZippingOptions
   s.contacts.damping.rotational = gamma > 0 ? o.rotationalGamma : 0.0;
   s.localDampingAlpha = alpha;
   const int n = o.elements;
-  const double d = 2 * kRadius + 0.34, half = 0.5 * (n - 1) * kLength;
+  const double d = 2 * kRadius + o.startGap, half = 0.5 * (n - 1) * kLength;
   const mdem::Vec3 ta = mdem::Vec3::UnitX(), tb(std::cos(angle), 0.0, std::sin(angle));
   for (const auto& [start, dir] : {std::pair{mdem::Vec3(-half * ta), ta}, std::pair{mdem::Vec3(mdem::Vec3(0, d, 0) - half * tb), tb}}) {
     mdem::FilamentSpec f;
@@ -296,6 +297,8 @@ Command makeBenchZippingCommand() {
     (*sub)->add_option("--max-time", opt->maxTime, "longest simulated time, ns");
     (*sub)->add_option("--rest-kinetic", opt->restKinetic, "kinetic energy at rest, zJ");
     (*sub)->add_option("--elements", opt->elements, "elements per tube");
+    (*sub)->add_option("--start-gap", opt->startGap, "wall gap at the crossing when released, nm (0.34: the runs before 2026-12-04)")
+        ->check(CLI::Range(0.0, 1.0));
     (*sub)->add_option("--series", opt->seriesPath,
                        "CSV file: every run sampled each ps (angle, energies, pairs per contact band, relative speeds)");
   };
@@ -303,7 +306,7 @@ Command makeBenchZippingCommand() {
   c.run = [opt] {
     if (!opt->seriesPath.empty()) requireWritableOutput(opt->seriesPath, "<command line>", "option --series");
     std::cout << fmt::format(
-        "Two (10,10) tubes of {} elements (2 nm) crossed, released; h = 2e-5 ns (or 0.7 of the critical step), "
+        "Two (10,10) tubes of {} elements (2 nm) crossed with a {} nm wall gap at the crossing, released; h = 2e-5 ns (or 0.7 of the critical step), "
         "gamma_r = {} pN ns with dashpots.\nTimes (ns) after which, to the end of the run ({} ns), the end-to-end "
         "angle stays below 10 and 3 degrees\nand the kinetic energy below {} zJ ('-': not reached); the final angle "
         "and vdW energy at the end; energy\ndissipated by the dashpots and the residual E(0) - E(end) - dashpots "
@@ -311,7 +314,7 @@ Command makeBenchZippingCommand() {
         "wall gap < 0.5 nm (dashpot full),\n0.5-1.0 nm (dashpot ramp), 1.0-1.2 nm (vdW only); rms relative speed at "
         "the contact points (nm/ns) of the\nfull and vdW-only bands and lambda*s weighted over the dashpot "
         "contacts.\n",
-        opt->elements, opt->rotationalGamma, opt->maxTime, opt->restKinetic);
+        opt->elements, opt->startGap, opt->rotationalGamma, opt->maxTime, opt->restKinetic);
     std::cout << "angle  alpha  gamma  h_ns     below_10  below_3  at_rest  final_deg  vdW_zJ   dashpot_zJ  residual_zJ"
                  "  n_full  n_ramp  n_vdw  v_full  v_vdw  v_weighted\n";
     std::string series = opt->seriesPath.empty() ? std::string() : csvRecord(kZippingSeriesColumns);
