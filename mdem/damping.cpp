@@ -1,5 +1,6 @@
 #include "mdem/damping.hpp"
 
+#include "mdem/binary_io.hpp"
 #include "mdem/effect_registry.hpp"
 #include "mdem/scene.hpp"
 
@@ -11,8 +12,9 @@ inline double sign(double v) { return (v > 0.0) - (v < 0.0); }
 
 // [local_damping] alpha in [0, 1) (optional: the Scene's default).
 void readLocalDampingTable(const TomlTable& t, Scene& s) {
-  t.allowOnly({"alpha"});
+  t.allowOnly({"alpha", "track_work"});
   s.localDampingAlpha = t.number("alpha");
+  s.localDampingTracksWork = t.booleanOr("track_work", false);
   if (s.localDampingAlpha < 0.0 || s.localDampingAlpha >= 1.0)
     t.fail("alpha", std::to_string(s.localDampingAlpha), "a number in [0, 1)");
 }
@@ -27,12 +29,82 @@ void readViscousDampingTable(const TomlTable& t, Scene& s) {
 
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "local_damping", 500, "Cundall's local non-viscous damping of each DOF ([local_damping] alpha)", true, nullptr,
-    [](EffectBuild& b) -> EffectPtr { return std::make_unique<LocalDamping>(b.scene.localDampingAlpha); },
+    [](EffectBuild& b) -> EffectPtr {
+      return std::make_unique<LocalDamping>(b.scene.localDampingAlpha, b.scene.localDampingTracksWork, b.scene);
+    },
     {"local_damping", false, readLocalDampingTable}, true})
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "viscous_damping", 510, "mass-proportional drag ([viscous_damping] rate_per_ns)", true, nullptr,
     [](EffectBuild& b) -> EffectPtr { return std::make_unique<ViscousDamping>(b.scene.viscousRate); },
     {"viscous_damping", true, readViscousDampingTable}, true})
+
+LocalDamping::LocalDamping(double alpha, bool trackWork, const Scene& scene) : alpha_(alpha), track_(trackWork) {
+  if (!track_) return;
+  const int n = scene.bodies.size();
+  dampForce_.assign(n, Vec3::Zero()), dampTorque_.assign(n, Vec3::Zero()), itemPower_.assign(n, 0.0);
+  cleared_.assign(n, {});
+  for (const FixedDofs& f : scene.boundary.fixed)
+    for (int d = 0; d < 6; ++d) cleared_[f.element][d] = cleared_[f.element][d] || f.fixed[d];
+  for (const Prescribed& p : scene.boundary.prescribed) cleared_[p.element].fill(true);
+}
+
+void LocalDamping::gather(const State& state, double, int lo, int hi, Vec3* force, Vec3* torque) const {
+  const Bodies& s = state.bodies;
+  if (!track_) {
+    for (int i = lo; i < hi; ++i) dampElement(s, i, force[i], torque[i]);
+    return;
+  }
+  for (int i = lo; i < hi; ++i) {
+    const Vec3 f0 = force[i], t0 = torque[i];
+    dampElement(s, i, force[i], torque[i]);
+    Vec3 df = force[i] - f0, dt = torque[i] - t0;
+    for (int d = 0; d < 3; ++d) {
+      if (cleared_[i][d]) df[d] = 0.0;
+      if (cleared_[i][3 + d]) dt[d] = 0.0;
+    }
+    dampForce_[i] = df, dampTorque_[i] = dt;
+    itemPower_[i] = -(df.dot(s.velocity[i]) + dt.dot(s.angularVelocityWorld(i)));
+  }
+}
+
+double LocalDamping::powerAtItemVelocities() const {
+  double power = 0.0;  // in the elements' order: independent of the thread count
+  for (double p : itemPower_) power += p;
+  return power;
+}
+
+void LocalDamping::finish(const State& state, double time) {
+  const double h = time - lastTime_;
+  lastTime_ = time;
+  if (!(h > 0.0) || state.stepVelocity.size() != dampForce_.size()) return;
+  const std::vector<Vec3>& v = state.stepVelocity;
+  const std::vector<Vec3>& w = state.stepAngularVelocity;
+  double now = 0.0;
+  for (std::size_t i = 0; i < dampForce_.size(); ++i) now -= dampForce_[i].dot(v[i]) + dampTorque_[i].dot(w[i]);
+  dissipated_ += h * now + 0.5 * h * opening_;
+  opening_ = 0.0;
+  pending_ = 0.25 * h * (3.0 * now - powerAtItemVelocities());
+}
+
+void LocalDamping::kickForcesReplaced(const State&) {
+  if (!track_) return;
+  dissipated_ -= pending_;
+  pending_ = 0.0;
+  opening_ = powerAtItemVelocities();
+}
+
+void LocalDamping::reportEnergy(const State&, EnergyLedger& ledger) const {
+  if (track_) ledger.add("local_damping_dissipated", EnergyKind::Dissipated, dissipated_ - pending_);
+}
+
+void LocalDamping::saveState(BinaryWriter& out) const {
+  if (track_) out.write(dissipated_), out.write(lastTime_), out.write(pending_), out.write(opening_);
+}
+
+void LocalDamping::loadState(BinaryReader& in) {
+  if (!track_ || in.remaining() < 4 * sizeof(double)) return;  // a checkpoint without the work: from 0
+  dissipated_ = in.read<double>(), lastTime_ = in.read<double>(), pending_ = in.read<double>(), opening_ = in.read<double>();
+}
 
 void LocalDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const {
   const double a = alpha_;

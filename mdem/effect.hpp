@@ -49,7 +49,8 @@ struct State {
 };
 
 // Physical effects model the material; numerical damping (local / viscous) only drives a
-// relaxation: it is left out of residuals, of grip reactions and of the energy balance.
+// relaxation: it is left out of residuals and of grip reactions, and of the energy balance unless
+// it charges its work (local damping with track_work, damping.hpp).
 enum class EffectRole { Physical, NumericalDamping };
 
 class Effect {

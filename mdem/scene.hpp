@@ -155,6 +155,7 @@ struct Scene {
   std::vector<Bond> bonds;
   std::vector<std::string> effects;   // "bonds", "vdw_contact", "contact_damping", "local_damping", "viscous_damping"
   double localDampingAlpha = 0.7;
+  bool localDampingTracksWork = false;  // [local_damping] track_work
   double viscousRate = 0.0;           // 1/ns
   Boundary boundary;
   Periodicity periodic;               // used by contacts (positions are never wrapped)

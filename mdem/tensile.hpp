@@ -19,7 +19,8 @@
 //           grip element i; trapezoid rule between samples) and the work of the dashpots;
 //   contacts: pairs with a wall gap below contact_gap_nm, and those crossing below
 //           aligned_angle_deg (the aligned pairs).
-// Energy balance: total(t) - total(0) = W - dissipated (dashpots; local damping not tracked).
+// Energy balance: total(t) - total(0) = W - dissipated (dashpots; local damping when it tracks
+// its work, [local_damping] track_work).
 #include <fstream>
 #include <memory>
 #include <string>

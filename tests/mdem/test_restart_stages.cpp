@@ -31,6 +31,9 @@ std::string stagedScene(long relaxSteps, long pullSteps) {
   text.replace(text.find("steps = 0\n"), 10, "");
   text.replace(text.find("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n"),
                std::string("energies_csv = \"energies.csv\"\nenergies_every = 20\nplot_png = \"energies.png\"\n").size(), "");
+  // The relax stage's local damping charges its work (a column of relax-energies.csv, resumed
+  // bit for bit from the checkpoints like the rest).
+  text.replace(text.find("alpha = 0.3\n"), 12, "alpha = 0.3\ntrack_work = true\n");
   const std::size_t tensile = text.find("[tensile]");
   text = text.substr(0, tensile);
   text += fmt::format(R"([[stages]]
@@ -64,6 +67,12 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax-energies.csv"));
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.csv"));
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "relax.png"));
+  {
+    std::ifstream relax(dir_ / "reference" / "relax-energies.csv");
+    std::string header;
+    std::getline(relax, header);
+    EXPECT_NE(header.find("local_damping_dissipated_zJ"), std::string::npos) << header;
+  }
   // One PNG per stage without asking: the pull's energies and its tensile plot by default names.
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-energies.png"));
   EXPECT_TRUE(fs::exists(dir_ / "reference" / "pull-tensile.png"));
@@ -131,7 +140,8 @@ TEST_F(Restart, RelaxThenPullEqualsTwoScenesJoinedByTheFinalState) {
   const std::string relaxScene = write("relax.toml", relax);
   std::string pull = staged.substr(0, first) + staged.substr(second);
   pull.replace(pull.find("[run]\n"), 6, "[run]\nstart_from = \"relax/relaxed.mdem\"\n");
-  pull.replace(pull.find("[local_damping]\nalpha = 0.3\n"), 27, "");  // named by the relax stage only
+  const std::string damping = "[local_damping]\nalpha = 0.3\ntrack_work = true\n";
+  pull.replace(pull.find(damping), damping.size(), "");  // named by the relax stage only
   const std::string pullScene = write("pull.toml", pull);
 
   const RunSummary relaxed = runScene(loadScene(relaxScene), (dir_ / "relax").string(), nullptr);
