@@ -168,13 +168,20 @@ ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double fro
 
 void TensileRecorder::writePlot(const std::string& path, const TensileBundles* bundles) const {
   std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
-  // Each stored (potential) energy, the kinetic energy, the grip work and total - initial.
+  // Each stored (potential) energy, the kinetic energy, the grip work, total - initial and the
+  // work of each dissipative effect since the first sample.
   std::vector<std::string> names;
   if (!samples_.empty())
     for (const LedgerEntry& e : samples_.front().energies.entries())
       if (e.kind == EnergyKind::Potential) names.push_back(e.name);
   const std::size_t stored = names.size();
   names.insert(names.end(), {"kinetic", "grip work", "total - initial"});
+  // The work the dissipative effects took (grip work = (total - initial) + dissipated).
+  std::vector<std::string> dissipated;
+  if (!samples_.empty())
+    for (const LedgerEntry& e : samples_.front().energies.entries())
+      if (e.kind == EnergyKind::Dissipated) dissipated.push_back(e.name);
+  names.insert(names.end(), dissipated.begin(), dissipated.end());
   std::vector<std::vector<double>> energy(names.size());
   for (const TensileSample& s : samples_) {
     strain.push_back(s.strain), stress.push_back(s.stress);
@@ -185,9 +192,13 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
     energy[stored].push_back(e.kinetic());
     energy[stored + 1].push_back(s.gripWork);
     energy[stored + 2].push_back(e.total() - samples_.front().energies.total());
+    for (std::size_t k = 0; k < dissipated.size(); ++k)
+      energy[stored + 3 + k].push_back(e[dissipated[k]] - samples_.front().energies[dissipated[k]]);
   }
   for (std::string& n : names)
     if (n == "vdw") n = "van der Waals";
+    else if (n == "contact_dissipated") n = "dissipated by the contact dashpots";
+    else if (n == "local_damping_dissipated") n = "dissipated by local damping";
   const int width = 900, height = 420;
   plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts and bundles against strain");
   fs.x.label = fe.x.label = fc.x.label = "strain";
