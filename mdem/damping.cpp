@@ -21,8 +21,9 @@ void readLocalDampingTable(const TomlTable& t, Scene& s) {
 
 // [viscous_damping] rate_per_ns > 0 (required).
 void readViscousDampingTable(const TomlTable& t, Scene& s) {
-  t.allowOnly({"rate_per_ns"});
+  t.allowOnly({"rate_per_ns", "track_work"});
   s.viscousRate = t.positive("rate_per_ns");
+  s.viscousDampingTracksWork = t.booleanOr("track_work", false);
 }
 
 }  // namespace
@@ -35,10 +36,13 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     {"local_damping", false, readLocalDampingTable}, true})
 MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     "viscous_damping", 510, "mass-proportional drag ([viscous_damping] rate_per_ns)", true, nullptr,
-    [](EffectBuild& b) -> EffectPtr { return std::make_unique<ViscousDamping>(b.scene.viscousRate); },
+    [](EffectBuild& b) -> EffectPtr {
+      return std::make_unique<ViscousDamping>(b.scene.viscousRate, b.scene.viscousDampingTracksWork, b.scene);
+    },
     {"viscous_damping", true, readViscousDampingTable}, true})
 
-LocalDamping::LocalDamping(double alpha, bool trackWork, const Scene& scene) : alpha_(alpha), track_(trackWork) {
+template <class Damping>
+TrackedDamping<Damping>::TrackedDamping(bool trackWork, const Scene& scene) : track_(trackWork) {
   if (!track_) return;
   const int n = scene.bodies.size();
   dampForce_.assign(n, Vec3::Zero()), dampTorque_.assign(n, Vec3::Zero()), itemPower_.assign(n, 0.0);
@@ -48,15 +52,17 @@ LocalDamping::LocalDamping(double alpha, bool trackWork, const Scene& scene) : a
   for (const Prescribed& p : scene.boundary.prescribed) cleared_[p.element].fill(true);
 }
 
-void LocalDamping::gather(const State& state, double, int lo, int hi, Vec3* force, Vec3* torque) const {
+template <class Damping>
+void TrackedDamping<Damping>::gather(const State& state, double, int lo, int hi, Vec3* force, Vec3* torque) const {
   const Bodies& s = state.bodies;
+  const Damping& damping = static_cast<const Damping&>(*this);
   if (!track_) {
-    for (int i = lo; i < hi; ++i) dampElement(s, i, force[i], torque[i]);
+    for (int i = lo; i < hi; ++i) damping.dampElement(s, i, force[i], torque[i]);
     return;
   }
   for (int i = lo; i < hi; ++i) {
     const Vec3 f0 = force[i], t0 = torque[i];
-    dampElement(s, i, force[i], torque[i]);
+    damping.dampElement(s, i, force[i], torque[i]);
     Vec3 df = force[i] - f0, dt = torque[i] - t0;
     for (int d = 0; d < 3; ++d) {
       if (cleared_[i][d]) df[d] = 0.0;
@@ -67,13 +73,15 @@ void LocalDamping::gather(const State& state, double, int lo, int hi, Vec3* forc
   }
 }
 
-double LocalDamping::powerAtItemVelocities() const {
+template <class Damping>
+double TrackedDamping<Damping>::powerAtItemVelocities() const {
   double power = 0.0;  // in the elements' order: independent of the thread count
   for (double p : itemPower_) power += p;
   return power;
 }
 
-void LocalDamping::finish(const State& state, double time) {
+template <class Damping>
+void TrackedDamping<Damping>::finish(const State& state, double time) {
   const double h = time - lastTime_;
   lastTime_ = time;
   if (!(h > 0.0) || state.stepVelocity.size() != dampForce_.size()) return;
@@ -86,25 +94,32 @@ void LocalDamping::finish(const State& state, double time) {
   pending_ = 0.25 * h * (3.0 * now - powerAtItemVelocities());
 }
 
-void LocalDamping::kickForcesReplaced(const State&) {
+template <class Damping>
+void TrackedDamping<Damping>::kickForcesReplaced(const State&) {
   if (!track_) return;
   dissipated_ -= pending_;
   pending_ = 0.0;
   opening_ = powerAtItemVelocities();
 }
 
-void LocalDamping::reportEnergy(const State&, EnergyLedger& ledger) const {
-  if (track_) ledger.add("local_damping_dissipated", EnergyKind::Dissipated, dissipated_ - pending_);
+template <class Damping>
+void TrackedDamping<Damping>::reportEnergy(const State&, EnergyLedger& ledger) const {
+  if (track_) ledger.add(name() + "_dissipated", EnergyKind::Dissipated, dissipated_ - pending_);
 }
 
-void LocalDamping::saveState(BinaryWriter& out) const {
+template <class Damping>
+void TrackedDamping<Damping>::saveState(BinaryWriter& out) const {
   if (track_) out.write(dissipated_), out.write(lastTime_), out.write(pending_), out.write(opening_);
 }
 
-void LocalDamping::loadState(BinaryReader& in) {
+template <class Damping>
+void TrackedDamping<Damping>::loadState(BinaryReader& in) {
   if (!track_ || in.remaining() < 4 * sizeof(double)) return;  // a checkpoint without the work: from 0
   dissipated_ = in.read<double>(), lastTime_ = in.read<double>(), pending_ = in.read<double>(), opening_ = in.read<double>();
 }
+
+template class TrackedDamping<LocalDamping>;
+template class TrackedDamping<ViscousDamping>;
 
 void LocalDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const {
   const double a = alpha_;

@@ -157,6 +157,7 @@ struct Scene {
   double localDampingAlpha = 0.7;
   bool localDampingTracksWork = false;  // [local_damping] track_work
   double viscousRate = 0.0;           // 1/ns
+  bool viscousDampingTracksWork = false;  // [viscous_damping] track_work
   Boundary boundary;
   Periodicity periodic;               // used by contacts (positions are never wrapped)
   ContactSpec contacts;               // parameters of vdw_contact / contact_damping
