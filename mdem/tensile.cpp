@@ -199,6 +199,7 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
     if (n == "vdw") n = "van der Waals";
     else if (n == "contact_dissipated") n = "dissipated by the contact dashpots";
     else if (n == "local_damping_dissipated") n = "dissipated by local damping";
+    else if (n == "viscous_damping_dissipated") n = "dissipated by viscous damping";
   const int width = 900, height = 420;
   plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts and bundles against strain");
   fs.x.label = fe.x.label = fc.x.label = "strain";
@@ -252,8 +253,8 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
       style.marker = plot::Marker::Circle;
       fb.add(fmt::format("{}, strain {:.3g}: {} bundles, largest {}", when, strain, d.bundles, d.largest), size, fraction, style);
     };
-    add("start", bundles->startStrain, bundles->start, 0);
-    add("end", bundles->endStrain, bundles->end, 1);
+    if (bundles->start.bundles > 0) add("start", bundles->startStrain, bundles->start, 0);
+    if (bundles->end.bundles > 0) add("end", bundles->endStrain, bundles->end, 1);
     image = plot::aboveEachOther(image, fb.render(width, height, path));
   }
   plot::writePng(path, image);
