@@ -1,5 +1,9 @@
 #include "mdem/damping.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "mdem/binary_io.hpp"
 #include "mdem/effect_registry.hpp"
 #include "mdem/scene.hpp"
@@ -8,7 +12,18 @@ namespace mesochain::mdem {
 
 namespace {
 
-inline double sign(double v) { return (v > 0.0) - (v < 0.0); }
+#if defined(__SSE2__)
+// a |f| sign(v), sign(v) in {-1, 0, +1}: +-(a |f|) exactly, or +0, with SSE2 masks instead of
+// forming the sign as a number (no branch: the signs of velocities are not predictable).
+inline double dampingTerm(double a, double f, double v) {
+  const __m128d m = _mm_mul_sd(_mm_set_sd(a), _mm_andnot_pd(_mm_set_sd(-0.0), _mm_set_sd(f)));
+  const __m128d vv = _mm_set_sd(v);
+  const __m128d signedM = _mm_or_pd(m, _mm_and_pd(vv, _mm_set_sd(-0.0)));
+  return _mm_cvtsd_f64(_mm_and_pd(signedM, _mm_cmpneq_sd(vv, _mm_setzero_pd())));
+}
+#else
+inline double dampingTerm(double a, double f, double v) { return a * std::abs(f) * ((v > 0.0) - (v < 0.0)); }
+#endif
 
 // [local_damping] alpha in [0, 1) (optional: the Scene's default).
 void readLocalDampingTable(const TomlTable& t, Scene& s) {
@@ -123,11 +138,11 @@ template class TrackedDamping<ViscousDamping>;
 
 void LocalDamping::dampElement(const Bodies& s, int i, Vec3& force, Vec3& torque) const {
   const double a = alpha_;
-  for (int d = 0; d < 3; ++d) force[d] -= a * std::abs(force[d]) * sign(s.velocity[i][d]);
+  for (int d = 0; d < 3; ++d) force[d] -= dampingTerm(a, force[d], s.velocity[i][d]);
   Vec3 tb = rotateInverse(s.orientation[i], torque);
   // sign(omega_body) = sign(L_body): the principal moments are positive (no division needed).
   const Vec3& lb = s.angularMomentumBody[i];
-  for (int d = 0; d < 3; ++d) tb[d] -= a * std::abs(tb[d]) * sign(lb[d]);
+  for (int d = 0; d < 3; ++d) tb[d] -= dampingTerm(a, tb[d], lb[d]);
   torque = rotate(s.orientation[i], tb);
 }
 
