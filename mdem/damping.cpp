@@ -57,14 +57,12 @@ MESOCHAIN_MDEM_EFFECT(EffectRegistration{
     {"viscous_damping", true, readViscousDampingTable}, true})
 
 template <class Damping>
-TrackedDamping<Damping>::TrackedDamping(bool trackWork, const Scene& scene) : track_(trackWork) {
+TrackedDamping<Damping>::TrackedDamping(bool trackWork, const Scene& scene)
+    : track_(trackWork) {
   if (!track_) return;
   const int n = scene.bodies.size();
+  kinematics_.emplace(scene.boundary, n);
   dampForce_.assign(n, Vec3::Zero()), dampTorque_.assign(n, Vec3::Zero()), itemPower_.assign(n, 0.0);
-  cleared_.assign(n, {});
-  for (const FixedDofs& f : scene.boundary.fixed)
-    for (int d = 0; d < 6; ++d) cleared_[f.element][d] = cleared_[f.element][d] || f.fixed[d];
-  for (const Prescribed& p : scene.boundary.prescribed) cleared_[p.element].fill(true);
 }
 
 template <class Damping>
@@ -79,10 +77,7 @@ void TrackedDamping<Damping>::gather(const State& state, double, int lo, int hi,
     const Vec3 f0 = force[i], t0 = torque[i];
     damping.dampElement(s, i, force[i], torque[i]);
     Vec3 df = force[i] - f0, dt = torque[i] - t0;
-    for (int d = 0; d < 3; ++d) {
-      if (cleared_[i][d]) df[d] = 0.0;
-      if (cleared_[i][3 + d]) dt[d] = 0.0;
-    }
+    kinematics_->clearElement(i, df, dt);
     dampForce_[i] = df, dampTorque_[i] = dt;
     itemPower_[i] = -(df.dot(s.velocity[i]) + dt.dot(s.angularVelocityWorld(i)));
   }
@@ -97,40 +92,35 @@ double TrackedDamping<Damping>::powerAtItemVelocities() const {
 
 template <class Damping>
 void TrackedDamping<Damping>::finish(const State& state, double time) {
-  const double h = time - lastTime_;
-  lastTime_ = time;
+  const double h = work_.stepTo(time);
   if (!(h > 0.0) || state.stepVelocity.size() != dampForce_.size()) return;
   const std::vector<Vec3>& v = state.stepVelocity;
   const std::vector<Vec3>& w = state.stepAngularVelocity;
   double now = 0.0;
   for (std::size_t i = 0; i < dampForce_.size(); ++i) now -= dampForce_[i].dot(v[i]) + dampTorque_[i].dot(w[i]);
-  dissipated_ += h * now + 0.5 * h * opening_;
-  opening_ = 0.0;
-  pending_ = 0.25 * h * (3.0 * now - powerAtItemVelocities());
+  work_.charge(h, now, powerAtItemVelocities());
 }
 
 template <class Damping>
 void TrackedDamping<Damping>::kickForcesReplaced(const State&) {
-  if (!track_) return;
-  dissipated_ -= pending_;
-  pending_ = 0.0;
-  opening_ = powerAtItemVelocities();
+  if (track_) work_.forcesReplaced(powerAtItemVelocities());
 }
 
 template <class Damping>
 void TrackedDamping<Damping>::reportEnergy(const State&, EnergyLedger& ledger) const {
-  if (track_) ledger.add(name() + "_dissipated", EnergyKind::Dissipated, dissipated_ - pending_);
+  if (track_) ledger.add(name() + "_dissipated", EnergyKind::Dissipated, work_.reported());
 }
 
 template <class Damping>
 void TrackedDamping<Damping>::saveState(BinaryWriter& out) const {
-  if (track_) out.write(dissipated_), out.write(lastTime_), out.write(pending_), out.write(opening_);
+  if (track_) out.write(work_.dissipated), out.write(work_.lastTime), out.write(work_.pending), out.write(work_.opening);
 }
 
 template <class Damping>
 void TrackedDamping<Damping>::loadState(BinaryReader& in) {
   if (!track_ || in.remaining() < 4 * sizeof(double)) return;  // a checkpoint without the work: from 0
-  dissipated_ = in.read<double>(), lastTime_ = in.read<double>(), pending_ = in.read<double>(), opening_ = in.read<double>();
+  work_.dissipated = in.read<double>(), work_.lastTime = in.read<double>();
+  work_.pending = in.read<double>(), work_.opening = in.read<double>();
 }
 
 template class TrackedDamping<LocalDamping>;

@@ -11,22 +11,22 @@
 // mass-proportional drag.
 //
 // Either may charge its work into the energy ledger (`track_work`, TrackedDamping below).
-#include <array>
+#include <optional>
 #include <vector>
 
+#include "mdem/boundary.hpp"
 #include "mdem/effect.hpp"
+#include "mdem/kick_work.hpp"
 #include "mdem/scene.hpp"
 
 namespace mesochain::mdem {
 
-// The work a numerical damping takes, charged when asked (`track_work`), for both kinds below:
-// as the dashpots charge theirs (contact_effects.hpp), h P(v(t)) per force evaluation with the
-// step velocities, P = -(D.v + T.w) summed over the elements in order (D, T the damping's force
-// and world torque as applied: the components the kinematics clear again, boundary.hpp, left
-// out), the second half kick's share held back until it is taken, and the opening half kick of
-// forces evaluated outside a step charged at the next finish. Reported as the ledger entry
-// NAME_dissipated (EnergyKind::Dissipated). Off by default: it needs a serial phase per step,
-// which also takes a bonded-chain scene off the stepper's barrier-free filament partition.
+// The work a numerical damping takes, charged when asked (`track_work`), for both kinds below,
+// as the dashpots charge theirs (kick_work.hpp): P = -(D.v + T.w) summed over the elements in
+// order, D and T the damping's force and world torque as applied (the components the
+// kinematics clear again, boundary.hpp, left out). Reported as the ledger entry NAME_dissipated
+// (EnergyKind::Dissipated). Off by default: it needs a serial phase per step, which also takes
+// a bonded-chain scene off the stepper's barrier-free filament partition.
 // `Damping` provides name() and dampElement(bodies, i, force, torque).
 template <class Damping>
 class TrackedDamping : public Effect {
@@ -49,8 +49,9 @@ class TrackedDamping : public Effect {
   // formed with.
   mutable std::vector<Vec3> dampForce_, dampTorque_;
   mutable std::vector<double> itemPower_;
-  std::vector<std::array<bool, 6>> cleared_;  // components the kinematics clear, per element
-  double dissipated_ = 0.0, lastTime_ = 0.0, pending_ = 0.0, opening_ = 0.0;
+  // The scene's fixed and prescribed components, which the stepper clears (with track_work).
+  std::optional<KinematicMap> kinematics_;
+  KickWork work_;
   double powerAtItemVelocities() const;
 };
 

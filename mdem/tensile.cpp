@@ -170,17 +170,16 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
   std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
   // Each stored (potential) energy, the kinetic energy, the grip work, total - initial and the
   // work of each dissipative effect since the first sample.
-  std::vector<std::string> names;
-  if (!samples_.empty())
-    for (const LedgerEntry& e : samples_.front().energies.entries())
+  // (grip work = (total - initial) + dissipated).
+  std::vector<std::string> names, dissipated;
+  if (!samples_.empty()) {
+    for (const LedgerEntry& e : samples_.front().energies.entries()) {
       if (e.kind == EnergyKind::Potential) names.push_back(e.name);
+      if (e.kind == EnergyKind::Dissipated) dissipated.push_back(e.name);
+    }
+  }
   const std::size_t stored = names.size();
   names.insert(names.end(), {"kinetic", "grip work", "total - initial"});
-  // The work the dissipative effects took (grip work = (total - initial) + dissipated).
-  std::vector<std::string> dissipated;
-  if (!samples_.empty())
-    for (const LedgerEntry& e : samples_.front().energies.entries())
-      if (e.kind == EnergyKind::Dissipated) dissipated.push_back(e.name);
   names.insert(names.end(), dissipated.begin(), dissipated.end());
   std::vector<std::vector<double>> energy(names.size());
   for (const TensileSample& s : samples_) {
@@ -195,11 +194,14 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
     for (std::size_t k = 0; k < dissipated.size(); ++k)
       energy[stored + 3 + k].push_back(e[dissipated[k]] - samples_.front().energies[dissipated[k]]);
   }
+  const std::string suffix = "_dissipated";
   for (std::string& n : names)
-    if (n == "vdw") n = "van der Waals";
-    else if (n == "contact_dissipated") n = "dissipated by the contact dashpots";
-    else if (n == "local_damping_dissipated") n = "dissipated by local damping";
-    else if (n == "viscous_damping_dissipated") n = "dissipated by viscous damping";
+    if (n == "vdw") {
+      n = "van der Waals";
+    } else if (n.ends_with(suffix)) {  // "contact_dissipated" -> "dissipated: contact"
+      n = "dissipated: " + n.substr(0, n.size() - suffix.size());
+      std::replace(n.begin(), n.end(), '_', ' ');
+    }
   const int width = 900, height = 420;
   plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts and bundles against strain");
   fs.x.label = fe.x.label = fc.x.label = "strain";

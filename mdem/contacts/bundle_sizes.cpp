@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mdem/contacts/element_pairs.hpp"
 
 namespace mesochain::mdem {
 
@@ -45,15 +44,18 @@ BundleSizeDistribution bundleSizeDistribution(int elements, const std::vector<st
   return d;
 }
 
-BundleSizeDistribution sceneBundleSizes(const Scene& scene, double contactGap, double alignedAngle, int excludeWithin) {
-  const Bodies& b = scene.bodies;
+std::vector<std::pair<int, int>> alignedPairs(const Bodies& b, const std::vector<ClosePair>& contacts, double alignedAngle) {
   const double cosMax = std::cos(alignedAngle);
   std::vector<std::pair<int, int>> aligned;
-  for (const ClosePair& p : closePairs(scene, contactGap, excludeWithin)) {
-    const Vec3 ti = rotate(b.orientation[p.i], Vec3::UnitZ()), tj = rotate(b.orientation[p.j], Vec3::UnitZ());
-    if (std::abs(ti.dot(tj)) >= cosMax) aligned.emplace_back(p.i, p.j);
-  }
-  return bundleSizeDistribution(b.size(), aligned);
+  for (const ClosePair& p : contacts)
+    if (std::abs(rotate(b.orientation[p.i], Vec3::UnitZ()).dot(rotate(b.orientation[p.j], Vec3::UnitZ()))) >= cosMax)
+      aligned.emplace_back(p.i, p.j);
+  return aligned;
+}
+
+BundleSizeDistribution sceneBundleSizes(const Scene& scene, double contactGap, double alignedAngle, int excludeWithin) {
+  return bundleSizeDistribution(scene.bodies.size(),
+                                alignedPairs(scene.bodies, closePairs(scene, contactGap, excludeWithin), alignedAngle));
 }
 
 nlohmann::ordered_json bundleSizesJson(const BundleSizeDistribution& d) {

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "mdem/contacts/element_pairs.hpp"
 #include "mdem/scene.hpp"
 
 namespace mesochain::mdem {
@@ -28,6 +29,10 @@ struct BundleSizeDistribution {
 
 // Union-find over the aligned pairs (i, j index elements 0..elements-1).
 BundleSizeDistribution bundleSizeDistribution(int elements, const std::vector<std::pair<int, int>>& alignedPairs);
+
+// The pairs of `contacts` whose element axes cross below alignedAngle (rad).
+std::vector<std::pair<int, int>> alignedPairs(const Bodies& bodies, const std::vector<ClosePair>& contacts,
+                                              double alignedAngle);
 
 // The aligned contacts of a scene's elements from their positions alone (element_pairs.hpp:
 // closePairs with the scene's periodic axes and the exclusion along a tube of `excludeWithin`

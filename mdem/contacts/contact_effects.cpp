@@ -373,42 +373,32 @@ double ContactDampingEffect::powerAtStepVelocities(const State& state) const {
 }
 
 void ContactDampingEffect::finish(const State& state, double time) {
-  const double h = time - lastTime_;
-  lastTime_ = time;
+  const double h = work_.stepTo(time);
   // Forces evaluated outside a step (a new simulation, a refresh, a report) charge nothing here
   // (kickForcesReplaced).
   if (!(h > 0.0) || state.stepVelocity.size() != static_cast<std::size_t>(state.bodies.size())) return;
-  const double atItems = powerAtItemVelocities();
-  const double now = powerAtStepVelocities(state);
-  dissipated_ += h * now + 0.5 * h * opening_;
-  opening_ = 0.0;
-  pending_ = 0.25 * h * (3.0 * now - atItems);
+  work_.charge(h, powerAtStepVelocities(state), powerAtItemVelocities());
 }
 
 void ContactDampingEffect::kickForcesReplaced(const State&) {
-  // The replaced forces never take their second half kick: its share, held back so far, leaves
-  // the work. The new ones open the next step with a half kick at these (synchronised)
-  // velocities, charged at the next finish as (h/2) P(v(t)) (O(h^2), once per boundary).
-  dissipated_ -= pending_;
-  pending_ = 0.0;
-  opening_ = powerAtItemVelocities();
+  work_.forcesReplaced(powerAtItemVelocities());
 }
 
 void ContactDampingEffect::reportEnergy(const State&, EnergyLedger& ledger) const {
-  ledger.add("contact_dissipated", EnergyKind::Dissipated, dissipated_ - pending_);
+  ledger.add("contact_dissipated", EnergyKind::Dissipated, work_.reported());
 }
 
 void ContactDampingEffect::saveState(BinaryWriter& out) const {
-  out.write(dissipated_), out.write(lastTime_);
+  out.write(work_.dissipated), out.write(work_.lastTime);
   if (ownsNeighbourhood_) nb_->saveList(out);
-  out.write(pending_), out.write(opening_);  // last: checkpoints written before they existed end without them
+  out.write(work_.pending), out.write(work_.opening);  // last: checkpoints written before they existed end without them
 }
 
 void ContactDampingEffect::loadState(BinaryReader& in) {
-  dissipated_ = in.read<double>(), lastTime_ = in.read<double>();
+  work_.dissipated = in.read<double>(), work_.lastTime = in.read<double>();
   if (ownsNeighbourhood_) nb_->loadList(in, scene_.bodies.size());
-  pending_ = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
-  opening_ = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
+  work_.pending = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
+  work_.opening = in.remaining() >= sizeof(double) ? in.read<double>() : 0.0;
   results_.resize(nb_->list().pairs().size());
   power_.resize(results_.size());
 }

@@ -17,6 +17,7 @@
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/contacts/vdw_contact.hpp"
 #include "mdem/effect.hpp"
+#include "mdem/kick_work.hpp"
 #include "mdem/scene.hpp"
 #include "mdem/stability.hpp"
 
@@ -148,16 +149,9 @@ class ContactDampingEffect : public Effect {
 
  private:
   static bool refreshesList(const Scene& scene, bool owner);
-  // Work: the kinetic energy the dashpot forces F of the force evaluation at time t remove in the
-  // two half kicks they take part in (velocity Verlet), (h/2) F.(v(t - h/2) + v(t))/2 +
-  // (h/2) F.(v(t) + v(t + h/2))/2 = h P(v(t)), P(v) = -F.v (over every pair's forces and torques,
-  // in the pairs' order: independent of the thread count), v(t) being the midpoint of the two
-  // half-step velocities (State::stepVelocity). The charge is booked whole at t; the part of its
-  // second half kick, which comes with the next step, (h/4)(3 P(v(t)) - P(v(t - h/2))), is held
-  // back from the reported work, so that grip work - dissipated = change of the energy holds at
-  // every output to the integrator's own O(h^2) (test GripWorkMinusDissipatedIsTheEnergyChangeWithContacts).
-  double dissipated_ = 0.0, lastTime_ = 0.0, pending_ = 0.0;
-  double opening_ = 0.0;  // P of forces evaluated outside a step, at their velocities: their opening half kick
+  // The dashpots' work (kick_work.hpp): P = -F.v over every pair's forces and torques, in the
+  // pairs' order (independent of the thread count).
+  KickWork work_;
   // P at the velocities of the step's time (State::stepVelocity), with its pair forces and torques.
   double powerAtStepVelocities(const State& state) const;
   // P at the velocities the last force evaluation's items used.

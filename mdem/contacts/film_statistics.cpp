@@ -60,12 +60,7 @@ FilmStatistics filmStatistics(const Scene& scene, const FilmStatisticsOptions& o
   const std::vector<ClosePair> contacts = closePairs(scene, o.contactGap, o.excludeWithin);
   f.contactPairs = static_cast<long>(contacts.size());
   f.alignedAngleDeg = o.alignedAngleDeg;
-  const double cosAligned = std::cos(o.alignedAngleDeg * units::kPi / 180.0);
-  std::vector<std::pair<int, int>> aligned;
-  for (const ClosePair& p : contacts)
-    if (std::abs(rotate(b.orientation[p.i], Vec3::UnitZ()).dot(rotate(b.orientation[p.j], Vec3::UnitZ()))) >= cosAligned)
-      aligned.emplace_back(p.i, p.j);
-  f.bundles = bundleSizeDistribution(f.elements, aligned);
+  f.bundles = bundleSizeDistribution(f.elements, alignedPairs(b, contacts, o.alignedAngleDeg * units::kPi / 180.0));
   f.contactsPerElement = 2.0 * f.contactPairs / f.elements;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(f.orientation);
   f.lambda1 = eig.eigenvalues()[1], f.lambda2 = eig.eigenvalues()[0];

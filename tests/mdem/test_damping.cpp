@@ -29,7 +29,6 @@ TEST(MdemLocalDamping, IsAlphaTimesTheForceAgainstTheVelocityBitForBit) {
   std::mt19937_64 random(5);
   std::uniform_int_distribution<int> pick(0, 9);
   std::normal_distribution<double> normal;
-  int checked = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     Vec3 f, t, v, l;
     for (int d = 0; d < 3; ++d)
@@ -45,9 +44,7 @@ TEST(MdemLocalDamping, IsAlphaTimesTheForceAgainstTheVelocityBitForBit) {
     const Vec3 expectedTorque = rotate(b.orientation[0], tb);
     EXPECT_TRUE(sameBits(force, expectedForce)) << f.transpose() << " | " << v.transpose();
     EXPECT_TRUE(sameBits(torque, expectedTorque)) << t.transpose() << " | " << l.transpose();
-    ++checked;
   }
-  EXPECT_EQ(checked, 4000);
   // A zero velocity component leaves that force component as it was, sign of zero included.
   b.velocity[0] = Vec3(0.0, -0.0, 1.0);
   Vec3 force(-0.0, 2.0, -0.0), torque = Vec3::Zero();

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "common/csv.hpp"
 #include "common/errors.hpp"
 #include "restart_fixture.hpp"
 
@@ -94,10 +95,7 @@ TEST_F(Restart, StagesResumeBitForBitAcrossTheStageBoundary) {
     std::ifstream rows(dir_ / "reference" / "pull-tensile.csv");
     std::vector<std::vector<std::string>> table;
     for (std::string line; std::getline(rows, line);) {
-      std::vector<std::string> cells;
-      std::stringstream cellStream(line);
-      for (std::string c; std::getline(cellStream, c, ',');) cells.push_back(c);
-      table.push_back(cells);
+      ASSERT_TRUE(csvParseRecord(line, table.emplace_back())) << line;
     }
     ASSERT_GE(table.size(), 3u);
     const auto column = [&](const std::string& name) {

@@ -58,6 +58,23 @@ void recordUntil(Simulation& sim, TensileRecorder& rec, double until, long every
   recordUntil(sim, rec, until, every, [](const TensileSample&) {});
 }
 
+// Runs `s` to 0.01 ns, sampling every step; returns the samples and the largest
+// |total - total(0) - (grip work - dissipated)| over the samples, relative to the final grip work.
+struct Balance {
+  std::vector<TensileSample> samples;
+  double worst = 0.0;  // of W
+};
+Balance energyBalance(const Scene& s) {
+  Simulation sim(s);
+  TensileRecorder rec(s, "");
+  const double start = rec.record(sim).energies.total();
+  double mismatch = 0.0;
+  recordUntil(sim, rec, 0.01, 1, [&](const TensileSample& t) {
+    mismatch = std::max(mismatch, std::abs(t.energies.total() - start - (t.gripWork - t.energies.dissipated())));
+  });
+  return {rec.samples(), mismatch / rec.samples().back().gripWork};
+}
+
 TEST(MdemTensile, GripsFollowTheRampProfile) {
   Scene s = tubeBetweenGrips({"bonds"}, 0.004);
   ASSERT_EQ(s.tensile.leftGrip.size(), 2u);
@@ -168,19 +185,12 @@ TEST(MdemTensile, GripWorkEqualsTheChangeOfTheTotalEnergy) {
 TEST(MdemTensile, GripWorkMinusDissipatedIsTheEnergyChangeWithContacts) {
   std::vector<double> worst;
   for (double fraction : {0.4, 0.2, 0.1, 0.05}) {
-    const Scene s = draggedTubeScene(fraction);
-    Simulation sim(s);
-    TensileRecorder rec(s, "");
-    const double start = rec.record(sim).energies.total();
-    double mismatch = 0.0;
-    recordUntil(sim, rec, 0.01, 1, [&](const TensileSample& t) {
-      mismatch = std::max(mismatch, std::abs(t.energies.total() - start - (t.gripWork - t.energies.dissipated())));
-    });
-    const TensileSample& last = rec.samples().back();
+    const Balance b = energyBalance(draggedTubeScene(fraction));
+    const TensileSample& last = b.samples.back();
     std::printf("fraction %.2g: %zu steps, grip work %.9g zJ, dissipated %.9g, largest mismatch %.3g of W\n", fraction,
-                rec.samples().size() - 1, last.gripWork, last.energies.dissipated(), mismatch / last.gripWork);
+                b.samples.size() - 1, last.gripWork, last.energies.dissipated(), b.worst);
     EXPECT_GT(last.energies.dissipated(), 0.01 * last.gripWork);  // the dashpots take a real share
-    worst.push_back(mismatch / last.gripWork);
+    worst.push_back(b.worst);
   }
   for (std::size_t k = 1; k < worst.size(); ++k) EXPECT_GT(worst[k - 1] / worst[k], 3.0) << "second order, step " << k;
   EXPECT_LT(worst.back(), 1e-6);
@@ -201,19 +211,13 @@ TEST(MdemTensile, GripWorkMinusDissipatedHoldsWithTrackedNumericalDamping) {
       s.effects.push_back(damping);
       s.localDampingAlpha = 0.3, s.localDampingTracksWork = true;
       s.viscousRate = 500.0, s.viscousDampingTracksWork = true;  // 1/ns, far below the bonds' 2e4 rad/ns
-      Simulation sim(s);
-      TensileRecorder rec(s, "");
-      const double start = rec.record(sim).energies.total();
-      double mismatch = 0.0;
-      recordUntil(sim, rec, 0.01, 1, [&](const TensileSample& t) {
-        mismatch = std::max(mismatch, std::abs(t.energies.total() - start - (t.gripWork - t.energies.dissipated())));
-      });
-      const EnergyLedger& e = rec.samples().back().energies;
-      const double w = rec.samples().back().gripWork;
+      const Balance b = energyBalance(s);
+      const EnergyLedger& e = b.samples.back().energies;
+      const double w = b.samples.back().gripWork;
       std::printf("%s, fraction %.2g: grip work %.9g zJ, dashpots %.9g, damping %.9g, largest mismatch %.3g of W\n",
-                  damping.c_str(), fraction, w, e["contact_dissipated"], e[damping + "_dissipated"], mismatch / w);
+                  damping.c_str(), fraction, w, e["contact_dissipated"], e[damping + "_dissipated"], b.worst);
       EXPECT_GT(e[damping + "_dissipated"], 0.005 * w) << damping;
-      worst.push_back(mismatch / w);
+      worst.push_back(b.worst);
     }
     for (std::size_t k = 1; k < worst.size(); ++k) EXPECT_GT(worst[k - 1] / worst[k], 3.0) << damping << ", second order, step " << k;
     EXPECT_LT(worst.back(), 1e-6) << damping;

@@ -49,18 +49,8 @@ TEST(MdemVtkFields, BondLoadsAndElementEnergies) {
   s.run.timeStepFraction = 0.5;
   const double stretch = 1e-3;  // nm, element 2 pulled along the chain
   s.bodies.position[2].z() += stretch;
-  Simulation sim(s);
-  VtkFields fields;
-  fields.elementEnergy.assign(3, 0.0);
-  for (const EffectPtr& e : sim.effects()) {
-    e->addElementEnergies(sim.state(), fields.elementEnergy);
-    if (e->bondList()) fields.bondLoads = e->bondLoads(sim.state());
-  }
-  const std::string path = (std::filesystem::temp_directory_path() / "mesochain-vtk-fields.vtk").string();
-  writeVtkFrame(path, sim.bodies(), sim.bonds(), sim.time(), fields);
-  std::ifstream in(path);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::filesystem::remove(path);
+  const Simulation sim(s);
+  const std::string text = frameText(sim, "mesochain-vtk-fields.vtk");
   ASSERT_NE(text.find("CELL_DATA 5"), std::string::npos);  // 3 vertex cells + 2 bonds
   const std::vector<double> normal = scalars(text, "normal_force_pN", 5);
   const double kn = kYoung / kL;  // k_n = Y / l (MPa/nm = pN/nm^3)
