@@ -56,6 +56,22 @@ std::vector<StageSpec> stagesOf(const Scene& s) {
   return {st};
 }
 
+// The steps a stage is expected to run at time step h, for the progress display: its steps (or
+// its duration's; 0 while h is unknown), fewer where its end is known in advance: a tensile stage
+// ends at its final strain (the grips' prescribed motion, tensileTimeToStrain), a compression
+// stage with its last cycle (its rate known: given, or set from the plates at the stage's start).
+// A stage that stops on its kinetic energy counts its maximum.
+long expectedStageSteps(const StageSpec& st, double h) {
+  long n = st.steps > 0 || h <= 0.0 ? st.steps : stepsForDuration(st.durationNs, h);
+  if (h <= 0.0) return n;
+  double end = -1.0;  // ns from the stage's start
+  if (st.tensileStage && st.tensile.finalStrain > 0.0 && st.tensile.strainRate > 0.0)
+    end = tensileTimeToStrain(st.tensile, st.tensile.finalStrain);
+  if (st.compressionStage && st.compression.strainRate > 0.0) end = st.compression.cycles * cycleDuration(st.compression);
+  if (end >= 0.0) n = n > 0 ? std::min(n, stepsForDuration(end, h)) : stepsForDuration(end, h);
+  return n;
+}
+
 // The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
 // extra effects and, for a tensile stage, its grips chosen from those positions (a scene without
 // [[stages]] has its grips from loadScene, unless it starts from another run's final state).
@@ -351,15 +367,16 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
   const std::string vtkPrefix = o.vtkPrefix.empty() ? "" : prepare(o.vtkPrefix);
   std::vector<StageSpec> stages = stagesOf(scene);
   const bool implicit = scene.stages.empty();
-  // The steps of the run for the progress fraction: a stage given as a duration counts its
-  // steps once its time step is known (each stage's simulation sets its own), until then at the
-  // last known step.
-  auto totalStepsAt = [&stages](double h) {
-    long n = 0;
-    for (const StageSpec& st : stages) n += st.steps > 0 || h <= 0.0 ? st.steps : stepsForDuration(st.durationNs, h);
+  // The steps of the run for the progress fraction, counted again at each stage's start: the
+  // steps the earlier stages took, and those the stage and the later ones are expected to take
+  // (expectedStageSteps) at the stage's own time step (each stage's simulation sets its own; the
+  // later stages' are not known yet).
+  auto expectedTotal = [&stages](std::size_t current, const StageSpec& currentSpec, double h, long done) {
+    long n = done + expectedStageSteps(currentSpec, h);
+    for (std::size_t i = current + 1; i < stages.size(); ++i) n += expectedStageSteps(stages[i], h);
     return std::max(1L, n);
   };
-  long totalSteps = totalStepsAt(0.0);
+  long totalSteps = expectedTotal(0, stages.front(), 0.0, 0);
   RunSummary r;
 
   // Resume, or start afresh in a folder without an interrupted run (or with --overwrite).
@@ -467,9 +484,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
     Simulation& sim = run->sim();
     // A duration becomes steps at the stage's own time step, set from the state the stage starts
     // in, so a resumed run resolves it to the same count.
-    if (spec.steps == 0 && spec.durationNs > 0.0) {
-      spec.steps = stepsForDuration(spec.durationNs, sim.timeStep());
-      totalSteps = totalStepsAt(sim.timeStep()), every = std::max(1L, totalSteps / 200);
+    if (spec.steps == 0 && spec.durationNs > 0.0) spec.steps = stepsForDuration(spec.durationNs, sim.timeStep());
+    {
+      StageSpec known = spec;  // with the compression rate its plates set (plate_speed_nm_per_ns)
+      if (known.compressionStage) known.compression = run->scene().compression;
+      totalSteps = expectedTotal(stageIndex, known, sim.timeStep(), stageStep - baseStep);
+      every = std::max(1L, totalSteps / 200);
     }
     if (options.profile) sim.setProfile(&r.profile);
     const bool resumingHere = resumed && !previous;
@@ -558,7 +578,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
         r.interrupted = r.stoppedOnRequest = true;
         break;
       }
-      if (progress && (k % every == 0 || last)) {
+      if (progress && (k % every == 0 || last || stop)) {
         if (options.status) options.status(run->status());
         progress(std::min(1.0, static_cast<double>(k - baseStep) / totalSteps));
       }

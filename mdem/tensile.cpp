@@ -32,6 +32,11 @@ double rampAcceleration(double t, double ramp, double speed) { return ramp > 0.0
 double rampVelocity(double t, double ramp, double speed) { return ramp > 0.0 ? speed * std::min(1.0, t / ramp) : speed; }
 }  // namespace
 
+double tensileTimeToStrain(const TensileSpec& t, double strain) {
+  const double duringRamp = 0.5 * t.strainRate * t.ramp;  // the strain at the ramp's end
+  return strain <= duringRamp ? std::sqrt(2.0 * t.ramp * strain / t.strainRate) : strain / t.strainRate + 0.5 * t.ramp;
+}
+
 void setUpTensile(Scene& s) {
   TensileSpec& t = s.tensile;
   if (!t.enabled) return;

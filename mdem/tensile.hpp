@@ -39,6 +39,13 @@ namespace mesochain::mdem {
 // constrained, or no cross-section.
 void setUpTensile(Scene& scene);
 
+// The time from a tensile test's start until the grips' prescribed motion reaches `strain`
+// (engineering, of the gauge length; t.strainRate > 0). Each grip's speed ramps linearly over
+// t.ramp (the FixedDofs of setUpTensile), so the strain is rate t^2 / (2 ramp) during the ramp and
+// rate (t - ramp / 2) after it. The measured strain (TensileRecorder) is the grips' mean
+// displacement, i.e. this motion as the integrator takes it.
+double tensileTimeToStrain(const TensileSpec& t, double strain);
+
 struct TensileSample {
   double time = 0.0, strain = 0.0, stress = 0.0;  // ns, -, MPa
   double forceLeft = 0.0, forceRight = 0.0;       // pN, specimen on the grips (axial)

@@ -3,6 +3,7 @@
 // stage errors name their key; --profile names every effect's phases. The fixture:
 // restart_fixture.hpp.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 
 #include "common/csv.hpp"
 #include "common/errors.hpp"
+#include "mdem/tensile.hpp"
 #include "restart_fixture.hpp"
 
 namespace mesochain::mdem {
@@ -307,6 +309,37 @@ TEST_F(Restart, MultipleTimeStepRunsResumeBitForBitBetweenBoundaries) {
   expectStagedResumesMatch(reference, {35L, 95L, 150L});
 }
 
+// The progress fraction counts a tensile stage to its final strain, not to its maximum steps:
+// the pull ends where the grips' prescribed motion reaches that strain (tensileTimeToStrain, past
+// the ramp here: 0.004 > 0.5/ns x 0.01 ns / 2), so the display reaches 100 % when the run ends.
+// Before, a pull capped at a million steps ended at 0.05 %.
+TEST_F(Restart, ProgressCountsATensileStageToItsFinalStrain) {
+  std::string text = stagedScene(90, 1000000);
+  text.replace(text.find("final_strain = 0.5"), 18, "final_strain = 0.004");
+  std::ofstream(scenePath_) << text;
+  std::vector<double> fractions;
+  const RunSummary r =
+      runScene(loadScene(scenePath_), (dir_ / "out").string(), [&](double f) { fractions.push_back(f); }, {});
+  ASSERT_EQ(r.stages.size(), 2u);
+  ASSERT_TRUE(r.stages[1].reachedFinalStrain);
+  ASSERT_EQ(r.performance.size(), 2u);
+  // The measured strain (the grips' mean displacement, sampled every 20 steps) reaches 0.004 at
+  // the closed form's step: the integrator moves the grips as tensileTimeToStrain says.
+  TensileSpec t;
+  t.strainRate = 0.5, t.ramp = 0.01;
+  const double duration = tensileTimeToStrain(t, 0.004);
+  EXPECT_DOUBLE_EQ(duration, 0.004 / 0.5 + 0.005);
+  const long predicted = stepsForDuration(duration, r.performance[1].timeStep);
+  EXPECT_GT(predicted, 100);
+  EXPECT_GE(r.stages[1].steps, predicted - 1);
+  EXPECT_LE(r.stages[1].steps, predicted + 20);
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_GT(fractions.back(), 0.97);
+  EXPECT_LE(fractions.back(), 1.0);
+  // Within the ramp: t^2 rate / (2 ramp).
+  EXPECT_DOUBLE_EQ(tensileTimeToStrain(t, 0.001), std::sqrt(2.0 * 0.01 * 0.001 / 0.5));
+}
+
 // duration_ns instead of steps: a stage runs the fewest steps whose time reaches its duration,
 // at the stage's own time step (a whole number of steps within rounding is that number), and a
 // run given by durations is the run given by those steps, also when it is killed and resumed.
@@ -415,7 +448,13 @@ TEST_F(Restart, CompressionResumesBitForBitMidCycle) {
   std::vector<std::string> status;  // the progress note (StatusLinesTellTheTimeStrainAndStress)
   RunOptions withStatus;
   withStatus.status = [&](const std::string& line) { status.push_back(line); };
-  const RunSummary reference = runScene(loadScene(scenePath_), (dir_ / "reference").string(), [](double) {}, withStatus);
+  std::vector<double> fractions;
+  const RunSummary reference =
+      runScene(loadScene(scenePath_), (dir_ / "reference").string(), [&](double f) { fractions.push_back(f); }, withStatus);
+  // The progress counts the squeeze to its last cycle, not to its 400 steps: about 100 % at the
+  // end (the cycles end within a sample's 10 steps of their duration's steps).
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_GT(fractions.back(), 0.97);
   ASSERT_FALSE(status.empty());
   EXPECT_EQ(status.back().rfind("squeeze: t = ", 0), 0u) << status.back();
   EXPECT_NE(status.back().find(", cycle 2 of 2, strain "), std::string::npos) << status.back();
