@@ -169,9 +169,10 @@ const CompressionSample& CompressionRecorder::record(const Simulation& sim, cons
   return samples_.back();
 }
 
-void CompressionRecorder::writePlot(const std::string& path) const {
+void CompressionRecorder::writePlot(const std::string& path, const std::string& runningNote) const {
   const int width = 900, height = 420;
   plot::Figure fp("Plate pressure against strain, per cycle"), ft("Thickness against time"), fd("Density after each cycle");
+  if (!runningNote.empty()) fp.title += " - " + runningNote;
   fp.x.label = "nominal compressive strain of the plate gap";
   fp.y.label = "pressure (MPa)";
   ft.x.label = "time (ns)";

@@ -80,7 +80,8 @@ class CompressionRecorder {
   bool done() const { return done_; }
   const std::vector<CompressionSample>& samples() const { return samples_; }
   const std::vector<CycleRecord>& cycles() const { return cycles_; }
-  void writePlot(const std::string& path) const;
+  // `runningNote`: as TimeSeriesPlot::write's (the first panel's title).
+  void writePlot(const std::string& path, const std::string& runningNote = "") const;
   void saveState(BinaryWriter& out) const;
   void loadState(BinaryReader& in);
   std::int64_t csvBytes() const { return csv_ ? csv_->bytes() : -1; }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <utility>
@@ -26,6 +27,8 @@ namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// The shortest wall time between two sets of a running stage's plots (StageRun::writeRunningPlots).
+constexpr int kRunningPlotSeconds = 60;
 
 // VTK frames PREFIX_NNNNNN.vtk of `prefix` (a path), with their frame numbers.
 std::vector<std::pair<long, fs::path>> vtkFrames(const std::string& prefix) {
@@ -215,6 +218,16 @@ class StageRun {
                           scene_.compression.cycles, c.strain, c.pressure);
     }
     return line;
+  }
+  // The stage's PNGs of the samples so far, marked as a run still going (written with the
+  // checkpoints: a run of hours shows its curves before it ends; finish() replaces them).
+  void writeRunningPlots() const {
+    const std::string note = fmt::format("running: t = {:.5g} ns, step {}", sim_.time(), sim_.stepCount());
+    if (plot_ && plot_->samples() > 0) plot_->write(prepare(spec_.plotPng), note);
+    if (tensile_ && !tensile_->samples().empty() && !scene_.tensile.png.empty())
+      tensile_->writePlot(prepare(scene_.tensile.png), nullptr, note);
+    if (compression_ && !compression_->samples().empty() && !scene_.compression.png.empty())
+      compression_->writePlot(prepare(scene_.compression.png), note);
   }
   bool reachedFinalStrain() const { return reachedStrain_; }
   bool cyclesDone() const { return compression_ && compression_->done(); }
@@ -517,6 +530,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       run->record(true);
       if (frames && stageIndex == 0) writeFrame(sim, run->scene());
     }
+    std::optional<Clock::time_point> lastRunningPlots;  // this stage's
     auto checkpoint = [&] {
       writeCheckpoint(
           checkpointPath, scene, sim, [&](BinaryWriter& out) { run->savePrelude(out); },
@@ -527,6 +541,12 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
           });
       lastCheckpoint = Clock::now();
       ++r.checkpoints;
+      // The plots of the samples so far, at most once a minute (a checkpoint every few steps
+      // would spend its time drawing).
+      if (!lastRunningPlots || lastCheckpoint - *lastRunningPlots > std::chrono::seconds(kRunningPlotSeconds)) {
+        run->writeRunningPlots();
+        lastRunningPlots = Clock::now();
+      }
     };
     StageSummary summary;
     summary.name = spec.name;
@@ -575,6 +595,7 @@ RunSummary runScene(const Scene& scene, const std::string& outputDirectory,
       if (!last && !stop && options.stopRequested && options.stopRequested->load()) {
         // This step's outputs are written; the checkpoint holds the state they continue from.
         if (!due) checkpoint();
+        run->writeRunningPlots();  // the curves up to this step, whenever the last ones were drawn
         r.interrupted = r.stoppedOnRequest = true;
         break;
       }

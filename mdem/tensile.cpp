@@ -171,7 +171,7 @@ ElasticFit fitElasticSlope(const std::vector<TensileSample>& samples, double fro
   return f;
 }
 
-void TensileRecorder::writePlot(const std::string& path, const TensileBundles* bundles) const {
+void TensileRecorder::writePlot(const std::string& path, const TensileBundles* bundles, const std::string& runningNote) const {
   std::vector<double> strain, stress, contacts, aligned, order, alignment, largest;
   // Each stored (potential) energy, the kinetic energy, the grip work, total - initial and the
   // work of each dissipative effect since the first sample.
@@ -209,6 +209,7 @@ void TensileRecorder::writePlot(const std::string& path, const TensileBundles* b
     }
   const int width = 900, height = 420;
   plot::Figure fs("Engineering stress against strain"), fe("Energies against strain"), fc("Contacts and bundles against strain");
+  if (!runningNote.empty()) fs.title += " - " + runningNote;
   fs.x.label = fe.x.label = fc.x.label = "strain";
   fs.y.label = "stress (MPa)";
   fe.y.label = "energy (zJ)";

@@ -95,7 +95,8 @@ class TensileRecorder {
   const std::vector<TensileSample>& samples() const { return samples_; }
   // PNG: stress-strain, energies against strain, contact and aligned pair counts, orientation,
   // and the bundle-size distributions at the stage's start and end when given.
-  void writePlot(const std::string& path, const TensileBundles* bundles = nullptr) const;
+  // `runningNote`: as TimeSeriesPlot::write's (the first panel's title).
+  void writePlot(const std::string& path, const TensileBundles* bundles = nullptr, const std::string& runningNote = "") const;
   // Checkpoints: the samples so far and the integration state of the grip work.
   void saveState(BinaryWriter& out) const;
   void loadState(BinaryReader& in);

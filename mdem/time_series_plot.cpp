@@ -42,7 +42,7 @@ void TimeSeriesPlot::record(double time, const EnergyLedger& e, const Bodies& b)
   }
 }
 
-void TimeSeriesPlot::write(const std::string& path) const {
+void TimeSeriesPlot::write(const std::string& path, const std::string& runningNote) const {
   const int width = 900, height = 450;
   plot::Figure energies;
   energies.x.label = "time (ns)";
@@ -63,6 +63,7 @@ void TimeSeriesPlot::write(const std::string& path) const {
     energies.add(legendName(columns_[k]), time_, energies_[k], style);
   }
   energies.title = zero.empty() ? "Energies" : fmt::format("Energies (zero throughout: {})", fmt::join(zero, ", "));
+  if (!runningNote.empty()) energies.title += " - " + runningNote;
   plot::Image image = energies.render(width, height, path);
   if (!probes_.empty()) {
     plot::Figure moved("Probe displacements"), turned("Probe rotations (integral of omega dt)");

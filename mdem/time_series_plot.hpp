@@ -21,7 +21,9 @@ class TimeSeriesPlot {
 
   // Energy series that stay exactly zero are left out and named in the panel title; non-finite
   // samples (a run that blew up) are skipped and counted in the legend.
-  void write(const std::string& path) const;
+  // `runningNote` (non-empty while the run goes on: mdem/run.cpp's plots at checkpoints) is added to
+  // the first panel's title, so that a plot of a run still going is not taken for its result.
+  void write(const std::string& path, const std::string& runningNote = "") const;
   // Checkpoints: every sample so far.
   void saveState(BinaryWriter& out) const;
   void loadState(BinaryReader& in);

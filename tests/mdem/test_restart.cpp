@@ -121,6 +121,8 @@ TEST_F(Restart, AStopRequestWritesACheckpointAndResumesBitForBit) {
   EXPECT_LT(stopped.steps, kSteps);
   EXPECT_EQ(stopped.checkpoints, 1);
   ASSERT_TRUE(fs::exists(dir_ / "stopped" / "checkpoint.mdem"));
+  // and the plot of the samples up to the stop (RunningStagesDrawTheirPlotsWithTheCheckpoints).
+  EXPECT_TRUE(fs::exists(dir_ / "stopped" / "energies.png"));
   RunOptions resume;
   resume.resume = true;
   const RunSummary r = run("stopped", resume);

@@ -17,6 +17,7 @@
 
 #include "common/csv.hpp"
 #include "common/errors.hpp"
+#include "common/plot/png_io.hpp"
 #include "mdem/tensile.hpp"
 #include "restart_fixture.hpp"
 
@@ -338,6 +339,33 @@ TEST_F(Restart, ProgressCountsATensileStageToItsFinalStrain) {
   EXPECT_LE(fractions.back(), 1.0);
   // Within the ramp: t^2 rate / (2 ramp).
   EXPECT_DOUBLE_EQ(tensileTimeToStrain(t, 0.001), std::sqrt(2.0 * 0.01 * 0.001 / 0.5));
+}
+
+// A stage's PNGs are drawn with the checkpoints while it runs (at most once a minute), so a run
+// of hours shows its curves before it ends, titled as running; the stage's end replaces them.
+TEST_F(Restart, RunningStagesDrawTheirPlotsWithTheCheckpoints) {
+  std::ofstream(scenePath_) << stagedScene(90, 110);
+  RunOptions kill;
+  kill.interruptAfter = 150;  // inside the pull; checkpoints every 20 steps
+  ASSERT_TRUE(run("out", kill).interrupted);
+  const fs::path out = dir_ / "out";
+  // The relax finished: its plot is final. The pull's two plots are those of its first
+  // checkpoint (step 100): readable PNGs of ten steps of the pull.
+  EXPECT_TRUE(fs::exists(out / "relax.png"));
+  for (const char* f : {"pull-energies.png", "pull-tensile.png"}) {
+    ASSERT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_GT(plot::readPng((out / f).string()).width(), 0) << f;
+  }
+  const std::string running = slurp(out / "pull-tensile.png");
+  RunOptions resume;
+  resume.resume = true;
+  ASSERT_FALSE(run("out", resume).interrupted);
+  // The finished pull's plot replaces it (all its samples, the bundle sizes' panel), and is that
+  // of an uninterrupted run.
+  EXPECT_NE(slurp(out / "pull-tensile.png"), running);
+  ASSERT_FALSE(run("reference").interrupted);
+  EXPECT_EQ(slurp(out / "pull-tensile.png"), slurp(dir_ / "reference" / "pull-tensile.png"));
+  EXPECT_EQ(slurp(out / "pull-energies.png"), slurp(dir_ / "reference" / "pull-energies.png"));
 }
 
 // duration_ns instead of steps: a stage runs the fewest steps whose time reaches its duration,
