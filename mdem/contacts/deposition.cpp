@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/portable_math.hpp"
 #include "mdem/contacts/portable_random.hpp"
 #include "mdem/contacts/drape_geometry.hpp"
 #include "mdem/units.hpp"
@@ -17,10 +18,11 @@
 namespace mesochain::mdem {
 
 namespace {
-// Standard normal by Box-Muller from two portable uniforms.
+// Standard normal by Box-Muller from two portable uniforms (portable_math.hpp: the same bits on
+// every platform).
 double normal(std::mt19937_64& g) {
   const double u1 = uniformUnit(g), u2 = uniformUnit(g);
-  return std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * units::kPi * u2);
+  return std::sqrt(-2.0 * portableLog(1.0 - u1)) * portableCos(2.0 * units::kPi * u2);
 }
 
 constexpr int kSelfExclude = 3;    // elements along one tube closer than this are not checked
@@ -95,7 +97,7 @@ void placeTube(const TubePath& path, const std::vector<double>& zeta, double l, 
   end.z() = zeta[0];
   for (int k = 0; k < n; ++k) {
     const double dz = zeta[k + 1] - zeta[k], h = std::sqrt(std::max(0.0, l * l - dz * dz));
-    const Vec3 step(h * std::cos(path.heading[k]), h * std::sin(path.heading[k]), dz);
+    const Vec3 step(h * portableCos(path.heading[k]), h * portableSin(path.heading[k]), dz);
     centre[k] = end + 0.5 * step;
     axis[k] = step / l;
     end += step;
@@ -186,7 +188,7 @@ DepositionResult depositFilm(Scene& scene, const DepositionSpec& spec) {
         placeTube(path, zeta, l, centre, axis);
         for (int k = 0; k < n; ++k) {
           const Vec3 here = domain.wrap(centre[k]);
-          const double h = std::hypot(axis[k].x(), axis[k].y());
+          const double h = std::sqrt(axis[k].x() * axis[k].x() + axis[k].y() * axis[k].y());  // (not libm's hypot)
           const Vec3 a(axis[k].x() / h, axis[k].y() / h, 0.0);
           double best = 0.0;  // the floor
           domain.forNear(here, [&](int j) {

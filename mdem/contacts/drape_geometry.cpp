@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mdem/contacts/portable_math.hpp"
+
 namespace mesochain::mdem {
 
 namespace {
@@ -76,11 +78,11 @@ double supportHeight(const Vec3& a, double ha, const Vec3& c, const Vec3& b, dou
 
 std::vector<double> drapeEnvelope(const std::vector<double>& required, const DrapeProfile& p) {
   const int n = static_cast<int>(required.size());
-  const double s = p.elementLength * std::sin(p.maxSlope);
+  const double s = p.elementLength * portableSin(p.maxSlope);
   // f(d) for d <= k, beyond which f grows linearly with slope s per element.
   const int k = std::max(0, static_cast<int>(std::ceil(p.maxSlope / p.bendPerElement + 0.5)) - 1);
   std::vector<double> f(k + 1, 0.0);
-  for (int i = 1; i <= k; ++i) f[i] = f[i - 1] + p.elementLength * std::sin(std::min(p.maxSlope, (i - 0.5) * p.bendPerElement));
+  for (int i = 1; i <= k; ++i) f[i] = f[i - 1] + p.elementLength * portableSin(std::min(p.maxSlope, (i - 0.5) * p.bendPerElement));
   std::vector<double> z(n), forward(n), backward(n);
   for (int e = 0; e < n; ++e) forward[e] = e == 0 ? required[0] : std::max(required[e], forward[e - 1] - s);
   for (int e = n - 1; e >= 0; --e) backward[e] = e == n - 1 ? required[e] : std::max(required[e], backward[e + 1] - s);

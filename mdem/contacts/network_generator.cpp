@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
+#include "mdem/contacts/portable_math.hpp"
 #include "mdem/contacts/portable_random.hpp"
 #include "mdem/contacts/neighbour_list.hpp"
 #include "mdem/units.hpp"
@@ -62,12 +63,12 @@ void generateNetwork(Scene& scene, const NetworkSpec& spec) {
       for (int k = 0; k < spec.elementsPerTube; ++k) {
         if (k > 0) {
           const double turn = spec.waviness * (2.0 * uniformUnit(gen) - 1.0);
-          const Vec3 prev(std::cos(phi), std::sin(phi), 0.0);
+          const Vec3 prev(portableCos(phi), portableSin(phi), 0.0);
           phi += turn;
-          const Vec3 next(std::cos(phi), std::sin(phi), 0.0);
+          const Vec3 next(portableCos(phi), portableSin(phi), 0.0);
           x += 0.5 * l * (prev + next);  // ends of consecutive elements meet
         }
-        const Segment s{x, Vec3(std::cos(phi), std::sin(phi), 0.0), 0.5 * l};
+        const Segment s{x, Vec3(portableCos(phi), portableSin(phi), 0.0), 0.5 * l};
         if (x.x() < 0.0 || x.x() > spec.size.x() || x.y() < 0.0 || x.y() > spec.size.y() || !clear(s)) {
           placed = false;
           break;

@@ -1,8 +1,8 @@
 #pragma once
 // Random networks of tubes: a film of given size filled with N tubes of `elementsPerTube`
 // elements (straight or wavy), without overlaps, reproducible from a seed (std::mt19937_64 and
-// explicit transforms, so the random numbers are the same on every platform; the directions go
-// through libm's sin and cos, so a libm that rounds them differently can give another network).
+// explicit transforms, so the random numbers are the same on every platform, and the directions
+// through portable_math.hpp's sin and cos, not libm's).
 //
 // Each tube: a random start inside the film, a random in-plane direction (x-y plane) and, for a
 // wavy tube, each next element turned by an angle uniform in [-waviness, waviness] in the plane.

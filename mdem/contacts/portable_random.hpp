@@ -1,9 +1,9 @@
 #pragma once
 // Random numbers that are the same on every platform: the network generators draw from
 // std::mt19937_64 (whose sequence the standard fixes) and convert with this function, not with
-// std::uniform_real_distribution (whose algorithm is left to the library). What the generators
-// compute from them with libm (sin, cos, log) is as portable as libm's rounding
-// (test CliDem.QuarterFilmRegeneratesTheCommittedBenchFilm).
+// std::uniform_real_distribution (whose algorithm is left to the library). Their sines, cosines
+// and logarithms come from portable_math.hpp, not libm (test
+// CliDem.QuarterFilmRegeneratesTheCommittedBenchFilm).
 #include <random>
 
 namespace mesochain::mdem {

@@ -132,11 +132,12 @@ TEST(CliDem, ReferenceFilmsGenerate) {
 
 namespace {
 
-// The committed quarter-size film (bench/buckypaper-quarter-2026-12-04/film.json, written by the
-// run whose partial curves lie there) regenerates from its scene, every reported number equal:
-// the committed data is main's, and a platform whose arithmetic or libm (the deposition's sin,
-// cos and log) differs from the reference machine's shows here, not silently in a new film.
-// The scene is the example's without its stages (no step run).
+// The committed quarter-size film (bench/buckypaper-quarter-portable-2026-12-04/film.json, written
+// by the run whose curves lie there) regenerates from its scene, every reported number equal: the
+// committed data is main's, and a platform whose arithmetic differs from the reference machine's
+// shows here, not silently in a new film (the generators call no libm function whose results
+// differ between libraries: portable_math.hpp, MdemPortableMath.SameBitsAsWritten). The scene is
+// the example's without its stages (no step run).
 TEST(CliDem, QuarterFilmRegeneratesTheCommittedBenchFilm) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("cli-dem-quarter-{}", ::getpid());
   fs::remove_all(dir);
@@ -153,7 +154,7 @@ TEST(CliDem, QuarterFilmRegeneratesTheCommittedBenchFilm) {
   ASSERT_EQ(runMesochain("dem quarter.toml -o film", dir, out), 0) << out;
   const nlohmann::json made = mesochain::testing::readJson(dir / "film" / "film.json");
   const nlohmann::json committed =
-      mesochain::testing::readJson(source / "bench" / "buckypaper-quarter-2026-12-04" / "film.json");
+      mesochain::testing::readJson(source / "bench" / "buckypaper-quarter-portable-2026-12-04" / "film.json");
   ASSERT_EQ(committed["elements"].get<long>(), 61391);
   int compared = 0;
   for (const auto& [key, value] : committed.items()) {
