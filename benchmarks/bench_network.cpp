@@ -21,6 +21,7 @@
 #include "benchmarks/bench_network_inertia.hpp"
 #include "benchmarks/bench_network_kernel.hpp"
 #include "benchmarks/bench_network_mts.hpp"
+#include "benchmarks/bench_network_skin.hpp"
 #include "app/cli/command.hpp"
 #include "common/errors.hpp"
 #include "mdem/contacts/contact_dashpot.hpp"
@@ -60,6 +61,8 @@ struct NetworkBenchOptions {
   std::string stateFromRun;          // a `mesochain dem` checkpoint of the --scene file's run: its elements' state
   std::string coarsenTo;             // with --scene: a scene whose element type is twice as long (bench_network_coarsen.hpp)
   bool coarsenRelaxed = false;       // coarsen after --relax-ns (the relaxed film), not before
+  std::vector<double> skins;         // --skins: the Verlet skin's cost (bench_network_skin.hpp)
+  long skinCheckSteps = 400;
   double alignedWindow = -1.0;       // >= 0: [vdw_contact] aligned_window_deg for the measurement
   int quadraturePoints = 0;          // > 0: [vdw_contact] quadrature_points after the relaxation (--relax-ns)
   int crossingPoints = 0;            // > 0: [vdw_contact] crossing_quadrature_points (as --quadrature-points; and --kernel-points)
@@ -238,6 +241,13 @@ Command makeBenchNetworkCommand() {
     (*sub)->add_option("--tube-length", opt->tubeLength, "elements per tube");
     (*sub)->add_option("--threads", opt->threads, "OpenMP threads of the parallel run");
     (*sub)->add_option("--seconds", opt->seconds, "time per measurement");
+    (*sub)->add_option("--skins", opt->skins,
+                       "[contacts] skin_nm values: listed pairs, list builds, rate and neighbour-search share per skin, "
+                       "and whether each skin's trajectory is the first one's bit for bit, and exit")
+        ->delimiter(',')
+        ->check(CLI::Range(1e-3, 10.0));
+    (*sub)->add_option("--skin-check-steps", opt->skinCheckSteps, "with --skins: steps of the trajectory comparison")
+        ->check(CLI::PositiveNumber);
     (*sub)->add_option("--steps", opt->steps, "fixed number of steps per measurement (multiple of 5; for callgrind)");
     (*sub)->add_flag("--isotropic", opt->isotropic, "isotropic (central) contact form instead of the anisotropic one");
     (*sub)->add_flag("--effects-cost", opt->effectsCost,
@@ -367,6 +377,12 @@ Command makeBenchNetworkCommand() {
       if (opt->bondSpectrum) return printBondSpectrum(s, scales, body);
       const StepKnob knob = mass ? StepKnob::Mass : fraction ? StepKnob::Fraction : StepKnob::Rotational;
       return printInertiaScaleCurve(s, knob, scales, body, opt->seconds, opt->threads, opt->pull);
+    }
+    if (!opt->skins.empty()) {
+      mdem::Scene s =
+          opt->scene.empty() ? networkScene(opt->totals.front(), opt->tubeLength, opt->isotropic) : sceneFile(*opt);
+      if (opt->relaxNs > 0.0) s = relaxedScene(std::move(s), opt->relaxNs, opt->relaxedState);
+      return printSkinCurve(s, opt->skins, opt->seconds, opt->threads, opt->skinCheckSteps);
     }
     if (!opt->outerRatios.empty()) {
       mdem::Scene s =

@@ -104,6 +104,27 @@ Vec3 forceOn(Simulation& sim, const char* effect, int first, int count) {
   return f;
 }
 
+// The list's reach changes no result: a listed pair beyond the kernels' reach adds exact zeros,
+// so a damped network (bonds, vdW contacts, dashpots, local damping) runs the same bits with a
+// skin that rebuilds the list every few steps and with one that lists many far pairs
+// (mesochain-bench network --skins measures what each costs).
+TEST(MdemContactEffects, TheSkinChangesNoResult) {
+  Scene a = dampedNetworkScene(), b = a;
+  a.contacts.skin = 0.02, b.contacts.skin = 1.5;
+  Simulation sa(a), sb(b);
+  sa.run(300), sb.run(300);
+  const ContactNeighbourhood *na = sa.contactNeighbourhood(), *nb = sb.contactNeighbourhood();
+  ASSERT_TRUE(na && nb);
+  EXPECT_GT(na->list().builds(), 5 * nb->list().builds());   // the small skin rebuilds often
+  EXPECT_GT(nb->list().pairs().size(), 2 * na->list().pairs().size());  // the large one lists more
+  for (int i = 0; i < a.bodies.size(); ++i) {
+    EXPECT_EQ(sa.state().bodies.position[i], sb.state().bodies.position[i]) << i;
+    EXPECT_EQ(sa.state().bodies.velocity[i], sb.state().bodies.velocity[i]) << i;
+    EXPECT_EQ(sa.state().bodies.angularMomentumBody[i], sb.state().bodies.angularMomentumBody[i]) << i;
+  }
+  EXPECT_EQ(sa.energies().total(), sb.energies().total());
+}
+
 TEST(MdemContactEffects, SlidingTubesUnderPeriodicBoundaries) {
   // Two aligned tubes, each a closed chain of 6 elements across a box periodic along x. Tube A
   // (first) slides at v along x, tube B is held. Friction per length = gamma v exactly; the vdW
