@@ -43,7 +43,9 @@ void TimeSeriesPlot::record(double time, const EnergyLedger& e, const Bodies& b)
 }
 
 void TimeSeriesPlot::write(const std::string& path, const std::string& runningNote) const {
-  const int width = 900, height = 450;
+  // 1000 px: wide enough that a legend of the ten-odd energy entries can go beside the plot when
+  // every inner corner would hide curves (plot::Figure keeps the plot at least half the width).
+  const int width = 1000, height = 450;
   plot::Figure energies;
   energies.x.label = "time (ns)";
   energies.y.label = "energy (zJ)";

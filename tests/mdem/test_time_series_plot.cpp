@@ -61,7 +61,7 @@ TEST(MdemTimeSeriesPlot, SceneWithPlotPngWritesEnergyAndProbePanels) {
   std::ofstream(dir / "with.toml") << scene("plot_png = \"plots/run.png\"\nprobes = [-1]\n");
   runScene(loadScene((dir / "with.toml").string()), (dir / "out").string(), nullptr);
   const plot::Image img = plot::readPng((dir / "out" / "plots" / "run.png").string());
-  EXPECT_EQ(img.width(), 900);
+  EXPECT_EQ(img.width(), 1000);
   EXPECT_EQ(img.height(), 3 * 450);  // energies, probe displacements, probe rotations
 
   std::ofstream(dir / "without.toml") << scene("plot_png = \"run.png\"\n");
@@ -84,7 +84,7 @@ TEST(MdemTimeSeriesPlot, NonFiniteSamplesDoNotStopThePlot) {
   EXPECT_EQ(plot.samples(), 5u);
   const std::string path = (dir / "p.png").string();
   EXPECT_NO_THROW(plot.write(path));
-  EXPECT_EQ(plot::readPng(path).width(), 900);
+  EXPECT_EQ(plot::readPng(path).width(), 1000);
   fs::remove_all(dir);
 }
 
