@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mdem/binary_io.hpp"
@@ -63,6 +64,8 @@ class StageRun {
   std::string prepare(const std::string& name) const;
   // Opens the stage's outputs (new, or cut back to `resume`'s lengths).
   void open(BinaryReader* resume);
+  // A checkpoint's sections: the outputs' lengths and the recorders' states (its tail), and
+  // where the stage began (its prelude, read back by readStageStart).
   void saveOutputs(BinaryWriter& out) const;
   void savePrelude(BinaryWriter& out) const;
   double startTime() const { return startTime_; }
@@ -79,6 +82,8 @@ class StageRun {
   bool recordsEvery() const { return csv_ || tensile_ || plot_ || compression_; }
   bool reachedFinalStrain() const { return reachedStrain_; }
   bool cyclesDone() const { return compression_ && compression_->done(); }
+  // The stage's end: its final plots, the tensile properties JSON and bundle sizes, the film
+  // report of a relax or compression stage, into `out`.
   void finish(StageSummary& out);
 
  private:
