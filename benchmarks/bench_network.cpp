@@ -104,20 +104,6 @@ struct Measurement {
   long pairs = 0;
 };
 
-// Runs `sim` until `fixedSteps` steps are done (> 0) or `seconds` have passed, 5 steps at a time;
-// returns the steps and the wall time.
-std::pair<long, double> timedSteps(mdem::Simulation& sim, double seconds, long fixedSteps) {
-  long steps = 0;
-  const auto t0 = std::chrono::steady_clock::now();
-  double elapsed = 0.0;
-  while (fixedSteps > 0 ? steps < fixedSteps : elapsed < seconds) {
-    sim.run(5);
-    steps += 5;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-  return {steps, elapsed};
-}
-
 // The rate comes from an unprofiled pass: with the stepper's phase timing on, one thread runs the
 // phase-by-phase scheme instead of the block sweep (mdem/stepper.cpp), not the production path. The
 // shares come from a second, profiled pass of the same length (not run under --steps, so that a
@@ -126,12 +112,12 @@ Measurement measure(const mdem::Scene& scene, double seconds, long fixedSteps) {
   mdem::Simulation sim(scene);
   sim.run(5);  // warm-up
   Measurement m;
-  const auto [steps, elapsed] = timedSteps(sim, seconds, fixedSteps);
+  const auto [steps, elapsed] = timedSteps(sim, seconds, fixedSteps, 5);  // 5: --steps is a multiple of 5
   m.rate = static_cast<double>(steps) * scene.bodies.size() / elapsed;
   if (fixedSteps <= 0) {
     mdem::PhaseTimes phases;  // the stepper's own phase timing (dem --profile)
     sim.setProfile(&phases);
-    const double profiled = timedSteps(sim, seconds, 0).second;
+    const double profiled = timedSteps(sim, seconds, 0, 5).second;
     sim.setProfile(nullptr);
     m.contactShare = (phases["items vdw_contact"] + phases["gather vdw_contact"]) / profiled;
     m.neighbourShare = (phases["prepare vdw_contact"] + phases["prepare contact_damping"]) / profiled;

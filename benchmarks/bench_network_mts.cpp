@@ -12,16 +12,21 @@
 
 namespace mesochain::app {
 
-double elementStepRate(mdem::Simulation& sim, double seconds) {
-  sim.run(8);
+std::pair<long, double> timedSteps(mdem::Simulation& sim, double seconds, long fixedSteps, int chunk) {
   long steps = 0;
   const auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0.0;
-  while (elapsed < seconds) {
-    sim.run(8);
-    steps += 8;
+  while (fixedSteps > 0 ? steps < fixedSteps : elapsed < seconds) {
+    sim.run(chunk);
+    steps += chunk;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+  return {steps, elapsed};
+}
+
+double elementStepRate(mdem::Simulation& sim, double seconds) {
+  sim.run(8);
+  const auto [steps, elapsed] = timedSteps(sim, seconds, 0, 8);
   return static_cast<double>(steps) * sim.bodies().size() / elapsed;
 }
 

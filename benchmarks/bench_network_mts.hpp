@@ -4,12 +4,17 @@
 // network: throughput at each ratio's own time step, and, at one common inner step, the energy
 // error without damping and the trajectory's deviation from the unsplit run
 // (docs/benchmarks.md, "multiple time stepping").
+#include <utility>
 #include <vector>
 
 #include "mdem/scene.hpp"
 #include "mdem/simulation.hpp"
 
 namespace mesochain::app {
+
+// Runs `sim` `chunk` steps at a time until `fixedSteps` steps are done (> 0) or `seconds` of wall
+// time have passed; returns the steps and the wall time (the benches' one timing loop).
+std::pair<long, double> timedSteps(mdem::Simulation& sim, double seconds, long fixedSteps, int chunk);
 
 // Element-steps per second of wall time of `sim` over `seconds`, after a warm-up of 8 steps.
 double elementStepRate(mdem::Simulation& sim, double seconds);

@@ -1,6 +1,5 @@
 #include "benchmarks/bench_network_skin.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -9,6 +8,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "benchmarks/bench_network_mts.hpp"
 #include "mdem/contacts/contact_effects.hpp"
 #include "mdem/simulation.hpp"
 
@@ -60,21 +60,12 @@ int printSkinCurve(const mdem::Scene& scene, const std::vector<double>& skins, d
     mdem::Simulation sim(s);
     sim.run(8);
     const long builds0 = listBuilds(sim);
-    long steps = 0;
-    const auto t0 = std::chrono::steady_clock::now();
-    double elapsed = 0.0;
-    while (elapsed < seconds) {
-      sim.run(8);
-      steps += 8;
-      elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
+    const auto [steps, elapsed] = timedSteps(sim, seconds, 0, 8);
     const double rate = static_cast<double>(steps) * s.bodies.size() / elapsed;
     const long builds = listBuilds(sim) - builds0;
     mdem::PhaseTimes phases;
     sim.setProfile(&phases);
-    const auto t1 = std::chrono::steady_clock::now();
-    for (long k = 0; k < steps / 2; k += 8) sim.run(8);
-    const double profiled = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    const double profiled = timedSteps(sim, seconds, steps / 2, 8).second;
     sim.setProfile(nullptr);
     const double share = (phases["prepare vdw_contact"] + phases["prepare contact_damping"]) / profiled;
     const mdem::ContactNeighbourhood* nb = sim.contactNeighbourhood();

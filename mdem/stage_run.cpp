@@ -13,7 +13,6 @@ namespace mesochain::mdem {
 
 namespace fs = std::filesystem;
 
-// The stages of a scene: its [[stages]], or one made of [run], [output] and [tensile].
 std::vector<StageSpec> stagesOf(const Scene& s) {
   if (!s.stages.empty()) return s.stages;
   StageSpec st;
@@ -25,11 +24,6 @@ std::vector<StageSpec> stagesOf(const Scene& s) {
   return {st};
 }
 
-// The steps a stage is expected to run at time step h, for the progress display: its steps (or
-// its duration's; 0 while h is unknown), fewer where its end is known in advance: a tensile stage
-// ends at its final strain (the grips' prescribed motion, tensileTimeToStrain), a compression
-// stage with its last cycle (its rate known: given, or set from the plates at the stage's start).
-// A stage that stops on its kinetic energy counts its maximum.
 long expectedStageSteps(const StageSpec& st, double h) {
   long n = st.steps > 0 || h <= 0.0 ? st.steps : stepsForDuration(st.durationNs, h);
   if (h <= 0.0) return n;
@@ -41,9 +35,6 @@ long expectedStageSteps(const StageSpec& st, double h) {
   return n;
 }
 
-// The scene a stage runs: the scene file's, starting from `bodies` at `time`, with the stage's
-// extra effects and, for a tensile stage, its grips chosen from those positions (a scene without
-// [[stages]] has its grips from loadScene, unless it starts from another run's final state).
 Scene stageScene(const Scene& base, const StageSpec& stage, std::int64_t index, const Bodies& bodies, double time,
                  bool implicit) {
   Scene s = base;

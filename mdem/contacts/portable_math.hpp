@@ -64,6 +64,15 @@ inline double cosKernel(double r) {
   const double z = r * r;
   return 1.0 + z * series(kCos, z);
 }
+// sin(k pi/2 + r) for k mod 4 = q: sin r, cos r, -sin r, -cos r (cos x is this at q + 1).
+inline double sinOfQuadrant(int q, double r) {
+  switch (q & 3) {
+    case 0: return sinKernel(r);
+    case 1: return cosKernel(r);
+    case 2: return -sinKernel(r);
+    default: return -cosKernel(r);
+  }
+}
 // r = x - k pi/2 and k mod 4.
 inline double reduce(double x, int* quadrant) {
   if (!(std::abs(x) <= kPortableTrigLimit))
@@ -75,34 +84,23 @@ inline double reduce(double x, int* quadrant) {
 }  // namespace portable_math_detail
 
 inline double portableSin(double x) {
-  using namespace portable_math_detail;
   int q;
-  const double r = reduce(x, &q);
-  switch (q) {
-    case 0: return sinKernel(r);
-    case 1: return cosKernel(r);
-    case 2: return -sinKernel(r);
-    default: return -cosKernel(r);
-  }
+  const double r = portable_math_detail::reduce(x, &q);
+  return portable_math_detail::sinOfQuadrant(q, r);
 }
 
 inline double portableCos(double x) {
-  using namespace portable_math_detail;
   int q;
-  const double r = reduce(x, &q);
-  switch (q) {
-    case 0: return cosKernel(r);
-    case 1: return -sinKernel(r);
-    case 2: return -cosKernel(r);
-    default: return sinKernel(r);
-  }
+  const double r = portable_math_detail::reduce(x, &q);
+  return portable_math_detail::sinOfQuadrant(q + 1, r);  // cos x = sin(x + pi/2)
 }
 
 // Natural logarithm of x > 0 (finite); -inf at 0, NaN below (as std::log).
 inline double portableLog(double x) {
   using namespace portable_math_detail;
+  if (std::isnan(x) || x < 0.0) return std::numeric_limits<double>::quiet_NaN();
   if (x == 0.0) return -std::numeric_limits<double>::infinity();
-  if (!(x > 0.0) || std::isinf(x)) return x < 0.0 || std::isnan(x) ? std::numeric_limits<double>::quiet_NaN() : x;
+  if (std::isinf(x)) return x;
   int e;
   double m = std::frexp(x, &e);  // x = m 2^e, m in [1/2, 1)
   if (m < kSqrtHalf) m *= 2.0, e -= 1;

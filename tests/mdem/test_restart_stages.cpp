@@ -326,10 +326,9 @@ TEST_F(Restart, ProgressCountsATensileStageToItsFinalStrain) {
   ASSERT_EQ(r.performance.size(), 2u);
   // The measured strain (the grips' mean displacement, sampled every 20 steps) reaches 0.004 at
   // the closed form's step: the integrator moves the grips as tensileTimeToStrain says.
-  TensileSpec t;
-  t.strainRate = 0.5, t.ramp = 0.01;
+  const TensileSpec& t = loadScene(scenePath_).stages[1].tensile;  // 0.5/ns, ramp 0.01 ns
   const double duration = tensileTimeToStrain(t, 0.004);
-  EXPECT_DOUBLE_EQ(duration, 0.004 / 0.5 + 0.005);
+  EXPECT_DOUBLE_EQ(duration, 0.004 / t.strainRate + 0.5 * t.ramp);
   const long predicted = stepsForDuration(duration, r.performance[1].timeStep);
   EXPECT_GT(predicted, 100);
   EXPECT_GE(r.stages[1].steps, predicted - 1);
@@ -338,7 +337,7 @@ TEST_F(Restart, ProgressCountsATensileStageToItsFinalStrain) {
   EXPECT_GT(fractions.back(), 0.97);
   EXPECT_LE(fractions.back(), 1.0);
   // Within the ramp: t^2 rate / (2 ramp).
-  EXPECT_DOUBLE_EQ(tensileTimeToStrain(t, 0.001), std::sqrt(2.0 * 0.01 * 0.001 / 0.5));
+  EXPECT_DOUBLE_EQ(tensileTimeToStrain(t, 0.001), std::sqrt(2.0 * t.ramp * 0.001 / t.strainRate));
 }
 
 // A stage's PNGs are drawn with the checkpoints while it runs (at most once a minute), so a run
